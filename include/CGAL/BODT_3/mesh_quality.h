@@ -1,0 +1,223 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_MESH_QUALITY_H
+#define CGAL_BODT_3_MESH_QUALITY_H
+
+#include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/dihedral_angles.h>
+
+#include <CGAL/Kernel/global_functions.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+struct Quality_options
+{
+  int histogram_bins = 36;          // bins of equal width over [0, 180] degrees
+  double small_angle = 10.0;        // a tetrahedron with a dihedral angle below this is counted
+  double large_angle = 170.0;       // ... and one with an angle above this
+};
+
+/// Dihedral-angle quality of a tetrahedral mesh, the same measures for every
+/// input type. Angles are in degrees. A tetrahedron is counted as inverted when
+/// CGAL's exact orientation predicate says it is not positively oriented (this
+/// includes flat tetrahedra).
+struct Quality_report
+{
+  std::size_t num_vertices = 0;
+  std::size_t num_tets = 0;
+  double min_dihedral_deg = 0;
+  double max_dihedral_deg = 0;
+  std::size_t tets_below_small = 0;
+  std::size_t tets_above_large = 0;
+  double min_radius_ratio = 0;
+  double mean_radius_ratio = 0;
+  double volume = 0;
+  std::map<int, double> volume_per_subdomain;
+  std::size_t inverted_tets = 0;
+  std::vector<std::size_t> histogram;   // counts of all six angles of each tetrahedron
+  Quality_options options;
+};
+
+/// Accumulates a `Quality_report` one tetrahedron at a time.
+class Quality_accumulator
+{
+public:
+  explicit Quality_accumulator(const Quality_options& opt = Quality_options())
+  {
+    r_.options = opt;
+    r_.histogram.assign(std::max(1, opt.histogram_bins), 0);
+    r_.min_dihedral_deg = std::numeric_limits<double>::infinity();
+    r_.max_dihedral_deg = -std::numeric_limits<double>::infinity();
+    r_.min_radius_ratio = std::numeric_limits<double>::infinity();
+  }
+
+  template <class Point>
+  void add(const Point& p0, const Point& p1, const Point& p2, const Point& p3, int subdomain)
+  {
+    const auto angles = dihedral_angles(p0, p1, p2, p3);
+    double lo = angles[0], hi = angles[0];
+    const int bins = static_cast<int>(r_.histogram.size());
+    for(double a : angles)
+    {
+      lo = std::min(lo, a);
+      hi = std::max(hi, a);
+      const int b = std::min(bins - 1, std::max(0, static_cast<int>(a / 180.0 * bins)));
+      ++r_.histogram[b];
+    }
+    r_.min_dihedral_deg = std::min(r_.min_dihedral_deg, lo);
+    r_.max_dihedral_deg = std::max(r_.max_dihedral_deg, hi);
+    if(lo < r_.options.small_angle) ++r_.tets_below_small;
+    if(hi > r_.options.large_angle) ++r_.tets_above_large;
+    const double rr = radius_ratio(p0, p1, p2, p3);
+    r_.min_radius_ratio = std::min(r_.min_radius_ratio, rr);
+    rr_sum_ += rr;
+    const double v = CGAL::volume(p0, p1, p2, p3);
+    r_.volume += v;
+    r_.volume_per_subdomain[subdomain] += v;
+    if(CGAL::orientation(p0, p1, p2, p3) != CGAL::POSITIVE) ++r_.inverted_tets;
+    ++r_.num_tets;
+  }
+
+  Quality_report result(std::size_t num_vertices) const
+  {
+    Quality_report r = r_;
+    r.num_vertices = num_vertices;
+    if(r.num_tets == 0)
+    {
+      r.min_dihedral_deg = r.max_dihedral_deg = r.min_radius_ratio = 0;
+    }
+    else
+      r.mean_radius_ratio = rr_sum_ / static_cast<double>(r.num_tets);
+    return r;
+  }
+
+private:
+  Quality_report r_;
+  double rr_sum_ = 0;
+};
+
+/// Quality of a `Tet_mesh`: tetrahedra labelled 0 are outside the mesh unless every
+/// label is 0. Vertices are counted when a measured tetrahedron uses them.
+inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& opt = Quality_options())
+{
+  Quality_accumulator acc(opt);
+  const bool all_zero = mesh.all_labels_zero();
+  std::vector<char> used(mesh.points.size(), 0);
+  for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    if(!mesh.in_mesh(t, all_zero)) continue;
+    const auto& c = mesh.tets[t];
+    acc.add(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]], mesh.tet_labels[t]);
+    for(int v : c) used[v] = 1;
+  }
+  return acc.result(static_cast<std::size_t>(std::count(used.begin(), used.end(), 1)));
+}
+
+namespace internal {
+template <class T, class = void> struct Is_c3t3 : std::false_type {};
+template <class T>
+struct Is_c3t3<T, std::void_t<typename T::Triangulation, typename T::Subdomain_index>> : std::true_type {};
+} // namespace internal
+
+/// Quality of a `Mesh_complex_3_in_triangulation_3`: the cells in the complex.
+template <class C3T3>
+std::enable_if_t<internal::Is_c3t3<C3T3>::value, Quality_report>
+mesh_quality(const C3T3& c3t3, const Quality_options& opt = Quality_options())
+{
+  const auto& tr = c3t3.triangulation();
+  auto cp = tr.geom_traits().construct_point_3_object();
+  Quality_accumulator acc(opt);
+  std::vector<typename C3T3::Vertex_handle> used;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    acc.add(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
+            cp(c->vertex(3)->point()), static_cast<int>(c3t3.subdomain_index(c)));
+    for(int i = 0; i < 4; ++i) used.push_back(c->vertex(i));
+  }
+  std::sort(used.begin(), used.end());
+  return acc.result(static_cast<std::size_t>(std::unique(used.begin(), used.end()) - used.begin()));
+}
+
+/// Quality of a `Triangulation_3`: its finite cells, all in subdomain 1.
+template <class Tr>
+std::enable_if_t<!internal::Is_c3t3<Tr>::value && !std::is_same<Tr, Tet_mesh>::value, Quality_report>
+mesh_quality(const Tr& tr, const Quality_options& opt = Quality_options())
+{
+  auto cp = tr.geom_traits().construct_point_3_object();
+  Quality_accumulator acc(opt);
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+    acc.add(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
+            cp(c->vertex(3)->point()), 1);
+  return acc.result(tr.number_of_vertices());
+}
+
+/// The report as one JSON object.
+inline std::string to_json(const Quality_report& r)
+{
+  std::ostringstream s;
+  auto num = [](double x) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    return std::string(buf);
+  };
+  s << "{\"num_vertices\": " << r.num_vertices << ", \"num_tets\": " << r.num_tets
+    << ", \"min_dihedral_deg\": " << num(r.min_dihedral_deg)
+    << ", \"max_dihedral_deg\": " << num(r.max_dihedral_deg)
+    << ", \"tets_below_" << num(r.options.small_angle) << "deg\": " << r.tets_below_small
+    << ", \"tets_above_" << num(r.options.large_angle) << "deg\": " << r.tets_above_large
+    << ", \"min_radius_ratio\": " << num(r.min_radius_ratio)
+    << ", \"mean_radius_ratio\": " << num(r.mean_radius_ratio) << ", \"volume\": " << num(r.volume)
+    << ", \"volume_per_subdomain\": {";
+  bool first = true;
+  for(const auto& kv : r.volume_per_subdomain)
+  {
+    s << (first ? "" : ", ") << "\"" << kv.first << "\": " << num(kv.second);
+    first = false;
+  }
+  s << "}, \"inverted_tets\": " << r.inverted_tets << ", \"histogram\": {\"bin_width_deg\": "
+    << num(180.0 / static_cast<double>(r.histogram.size())) << ", \"counts\": [";
+  for(std::size_t i = 0; i < r.histogram.size(); ++i) s << (i ? ", " : "") << r.histogram[i];
+  s << "]}}";
+  return s.str();
+}
+
+/// The report as a few lines of text for people.
+inline void print_report(std::ostream& out, const Quality_report& r)
+{
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "vertices %zu, tetrahedra %zu\n"
+                "dihedral angles: min %.2f deg, max %.2f deg; %zu tets below %g deg, %zu above %g deg\n"
+                "radius ratio: min %.4f, mean %.4f\n"
+                "volume %.10g; inverted or flat tetrahedra: %zu\n",
+                r.num_vertices, r.num_tets, r.min_dihedral_deg, r.max_dihedral_deg, r.tets_below_small,
+                r.options.small_angle, r.tets_above_large, r.options.large_angle, r.min_radius_ratio,
+                r.mean_radius_ratio, r.volume, r.inverted_tets);
+  out << buf;
+  if(r.volume_per_subdomain.size() > 1)
+  {
+    out << "volume per subdomain:";
+    for(const auto& kv : r.volume_per_subdomain)
+    {
+      std::snprintf(buf, sizeof buf, " [%d] %.10g", kv.first, kv.second);
+      out << buf;
+    }
+    out << "\n";
+  }
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_MESH_QUALITY_H

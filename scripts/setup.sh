@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs what the package needs from Debian, then configures and builds it.
+# Usage: scripts/setup.sh [cmake-target...]   (default: everything)
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+
+packages=(build-essential cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev
+          libgmp-dev libmpfr-dev libtbb-dev libgtest-dev googletest)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+# A real third-party mesh for the demo: CGAL's own sphere.mesh, shipped in Debian's libcgal-demo.
+data="$here/build/data"
+if [ ! -f "$data/sphere.mesh" ]; then
+  mkdir -p "$data"
+  tar -xzf /usr/share/doc/libcgal-dev/examples.tar.gz -C "$data" --strip-components=3 \
+      examples/Tetrahedral_remeshing/data/sphere.mesh
+  tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" --strip-components=2 \
+      data/meshes/fandisk.off data/meshes/elephant.off data/meshes/anchor.off
+fi
+
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
+if [ $# -gt 0 ]; then
+  cmake --build "$here/build" -j2 --target "$@"
+else
+  cmake --build "$here/build" -j2
+fi

@@ -1,0 +1,292 @@
+// Medit reading and writing, and every kind of bad input, through the library
+// and through the `bodt` command as a user meets it: a clear message naming the
+// file and line, a non-zero exit status below 128, and no output file left.
+#include <CGAL/BODT_3/IO/medit.h>
+#include <CGAL/BODT_3/IO/mesh_io.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+using CGAL::BODT_3::Mesh_io_error;
+using CGAL::BODT_3::Tet_mesh;
+using Point = Tet_mesh::Point;
+
+namespace {
+
+fs::path tmp_dir()
+{
+  fs::path d(BODT_TEST_TMP);
+  fs::create_directories(d);
+  return d;
+}
+
+fs::path write_file(const std::string& name, const std::string& text)
+{
+  const fs::path p = tmp_dir() / name;
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+// Two tetrahedra sharing face (2 3 4), in subdomains 1 and 2, with boundary
+// triangles, an edge, a corner and a ridge.
+const char* const good_mesh =
+    "MeshVersionFormatted 2\n"      // line 1
+    "Dimension 3\n"                 // 2
+    "Vertices\n"                    // 3
+    "5\n"                           // 4
+    "0 0 0 1\n"                     // 5
+    "1 0 0 1\n"                     // 6
+    "0 1 0 1\n"                     // 7
+    "0 0 1 1\n"                     // 8
+    "1 1 1 2\n"                     // 9
+    "Tetrahedra\n"                  // 10
+    "2\n"                           // 11
+    "1 2 3 4 1\n"                   // 12
+    "2 3 4 5 2\n"                   // 13
+    "Triangles\n"
+    "1\n"
+    "1 2 3 7\n"
+    "Edges\n"
+    "1\n"
+    "1 2 4\n"
+    "Corners\n"
+    "1\n"
+    "1\n"
+    "Ridges\n"
+    "1\n"
+    "1\n"
+    "End\n";
+
+std::string with_line(const std::string& text, int line, const std::string& replacement)
+{
+  std::istringstream in(text);
+  std::string out, l;
+  for(int n = 1; std::getline(in, l); ++n) out += (n == line ? replacement : l) + "\n";
+  return out;
+}
+
+std::string truncate_after_line(const std::string& text, int line)
+{
+  std::istringstream in(text);
+  std::string out, l;
+  for(int n = 1; n <= line && std::getline(in, l); ++n) out += l + "\n";
+  return out;
+}
+
+// Runs the tool; returns the exit status and fills `output` with stdout+stderr.
+int run_bodt(const std::string& args, std::string& output)
+{
+  const fs::path log = tmp_dir() / "bodt_output.txt";
+  const std::string cmd = std::string(BODT_BINARY) + " " + args + " > " + log.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(log);
+  output.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+struct Bad_input
+{
+  std::string name;
+  std::string text;          // file content; empty name of missing file below
+  long line;                 // expected line in the message (0: none)
+  std::string words;         // expected words in the message
+};
+
+std::vector<Bad_input> bad_inputs()
+{
+  const std::string g = good_mesh;
+  return {
+      {"empty.mesh", "", 0, "empty"},
+      {"blank.mesh", "  \n\n", 0, "empty"},
+      {"truncated.mesh", truncate_after_line(g, 8), 8, "truncated"},
+      {"truncated_tets.mesh", truncate_after_line(g, 12), 12, "truncated"},
+      {"count_too_small.mesh", with_line(g, 4, "4"), 9, "count"},
+      {"count_too_large.mesh", with_line(g, 11, "3"), 14, "ends after 2 of the 3 tetrahedra"},
+      {"nan.mesh", with_line(g, 7, "0 nan 0 1"), 7, "not a finite number"},
+      {"inf.mesh", with_line(g, 8, "0 0 inf 1"), 8, "not a finite number"},
+      {"index_out_of_range.mesh", with_line(g, 13, "2 3 4 6 2"), 13, "vertex indices run from 1 to 5"},
+      {"index_zero.mesh", with_line(g, 13, "0 3 4 5 2"), 13, "vertex 0"},
+      {"repeated_tet.mesh", with_line(with_line(g, 11, "3"), 13, "2 3 4 5 2\n3 4 2 5 2"), 14, "repeats tetrahedron 2"},
+      {"degenerate_tet.mesh", with_line(g, 13, "2 4 4 5 2"), 13, "uses vertex 4 twice"},
+      {"mixed_orientation.mesh", with_line(g, 13, "2 4 3 5 2"), 13, "mixed orientation"},
+      // Edited from the bottom up so that line numbers above stay valid.
+      {"three_tets_on_a_face.mesh",
+       with_line(with_line(with_line(with_line(g, 13, "2 3 4 5 2\n2 3 4 6 2"), 11, "3"), 9, "1 1 1 2\n-1 -1 -1 0"),
+                 4, "6"),
+       15, "third to share face"},
+      {"garbage.mesh", with_line(g, 6, "1 zero 0 1"), 6, "found 'zero'"},
+      {"not_medit.mesh", "solid foo\nfacet normal 0 0 1\n", 1, "not a Medit mesh file"},
+      {"dimension2.mesh", with_line(g, 2, "Dimension 2"), 2, "2D mesh"},
+      {"bad_ridge.mesh", with_line(g, 25, "7"), 25, "Ridges entry 1 refers to edge 7"},
+  };
+}
+
+} // namespace
+
+TEST(MeditIO, ReadsSectionsAndLabels)
+{
+  const fs::path p = write_file("good.mesh", good_mesh);
+  std::ostringstream warnings;
+  const Tet_mesh m = CGAL::BODT_3::IO::read_medit(p.string(), warnings);
+  EXPECT_EQ(warnings.str(), "");
+  ASSERT_EQ(m.points.size(), 5u);
+  EXPECT_EQ(m.points[4], Point(1, 1, 1));
+  EXPECT_EQ(m.vertex_refs[4], 2);
+  ASSERT_EQ(m.tets.size(), 2u);
+  EXPECT_EQ(m.tets[1], (std::array<int, 4>{1, 2, 3, 4}));
+  EXPECT_EQ(m.tet_labels, (std::vector<int>{1, 2}));
+  EXPECT_EQ(m.triangle_labels, (std::vector<int>{7}));
+  ASSERT_EQ(m.edges.size(), 1u);
+  EXPECT_EQ(m.edges[0], (std::array<int, 2>{0, 1}));
+  EXPECT_EQ(m.edge_labels[0], 4);
+  EXPECT_EQ(m.corners, (std::vector<int>{0}));
+  EXPECT_EQ(m.ridges, (std::vector<int>{0}));
+}
+
+TEST(MeditIO, RoundTripIsExact)
+{
+  const fs::path p = write_file("good.mesh", good_mesh);
+  std::ostringstream warnings;
+  Tet_mesh m = CGAL::BODT_3::IO::read_medit(p.string(), warnings);
+  m.points[0] = Point(0.1, 1.0 / 3.0, -2.0 / 7.0);     // not representable in few digits
+  m.points[4] = Point(1 + 1e-15, 1, 1);
+  const fs::path q = tmp_dir() / "roundtrip.mesh";
+  CGAL::BODT_3::IO::write_medit(q.string(), m);
+  const Tet_mesh r = CGAL::BODT_3::IO::read_medit(q.string(), warnings);
+  EXPECT_EQ(r.points, m.points);
+  EXPECT_EQ(r.vertex_refs, m.vertex_refs);
+  EXPECT_EQ(r.tets, m.tets);
+  EXPECT_EQ(r.tet_labels, m.tet_labels);
+  EXPECT_EQ(r.triangles, m.triangles);
+  EXPECT_EQ(r.triangle_labels, m.triangle_labels);
+  EXPECT_EQ(r.edges, m.edges);
+  EXPECT_EQ(r.corners, m.corners);
+  EXPECT_EQ(r.ridges, m.ridges);
+}
+
+TEST(MeditIO, NegativelyOrientedMeshIsReorientedWithWarning)
+{
+  const std::string flipped = with_line(with_line(good_mesh, 12, "1 2 4 3 1"), 13, "2 4 3 5 2");
+  const fs::path p = write_file("flipped.mesh", flipped);
+  std::ostringstream warnings;
+  const Tet_mesh m = CGAL::BODT_3::IO::read_medit(p.string(), warnings);
+  EXPECT_NE(warnings.str().find("negatively oriented"), std::string::npos);
+  for(const auto& c : m.tets)
+    EXPECT_EQ(CGAL::orientation(m.points[c[0]], m.points[c[1]], m.points[c[2]], m.points[c[3]]), CGAL::POSITIVE);
+}
+
+TEST(MeditIO, UnknownSectionsAreSkippedWithWarning)
+{
+  const std::string text = with_line(good_mesh, 10, "MyExtension\n2\n1.5 2.5\nTetrahedra");
+  const fs::path p = write_file("unknown_section.mesh", text);
+  std::ostringstream warnings;
+  const Tet_mesh m = CGAL::BODT_3::IO::read_medit(p.string(), warnings);
+  EXPECT_EQ(m.tets.size(), 2u);
+  EXPECT_NE(warnings.str().find("unknown section 'MyExtension'"), std::string::npos) << warnings.str();
+  EXPECT_NE(warnings.str().find(":10:"), std::string::npos) << warnings.str();
+}
+
+TEST(MeditIO, EveryBadInputThrowsWithFileAndLine)
+{
+  for(const auto& bad : bad_inputs())
+  {
+    const fs::path p = write_file(bad.name, bad.text);
+    std::ostringstream warnings;
+    try
+    {
+      CGAL::BODT_3::IO::read_medit(p.string(), warnings);
+      ADD_FAILURE() << bad.name << " was accepted";
+    }
+    catch(const Mesh_io_error& e)
+    {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(p.string()), std::string::npos) << what;
+      if(bad.line > 0)
+      {
+        EXPECT_EQ(e.line(), bad.line) << bad.name << ": " << what;
+      }
+      EXPECT_NE(what.find(bad.words), std::string::npos) << bad.name << ": " << what;
+    }
+  }
+}
+
+TEST(MeditIO, MissingFile)
+{
+  EXPECT_THROW(CGAL::BODT_3::IO::read_medit((tmp_dir() / "does_not_exist.mesh").string()), Mesh_io_error);
+}
+
+TEST(CommandLine, BadInputsExitCleanlyAndLeaveNoOutput)
+{
+  auto inputs = bad_inputs();
+  inputs.push_back({"does_not_exist.mesh", "", 0, "cannot open"});
+  for(const auto& bad : inputs)
+  {
+    fs::path p = tmp_dir() / bad.name;
+    if(bad.name != "does_not_exist.mesh") p = write_file(bad.name, bad.text);
+    const fs::path out = tmp_dir() / ("out_" + bad.name);
+    fs::remove(out);
+    std::string output;
+    const int status = run_bodt("convert " + p.string() + " " + out.string(), output);
+    EXPECT_GT(status, 0) << bad.name;
+    EXPECT_LT(status, 128) << bad.name;
+    EXPECT_NE(output.find(p.string()), std::string::npos) << bad.name << ": " << output;
+    EXPECT_NE(output.find(bad.words), std::string::npos) << bad.name << ": " << output;
+    if(bad.line > 0)
+    {
+      EXPECT_NE(output.find(":" + std::to_string(bad.line) + ":"), std::string::npos) << bad.name << ": " << output;
+    }
+    EXPECT_FALSE(fs::exists(out)) << bad.name;
+    for(const auto& f : fs::directory_iterator(tmp_dir()))
+      EXPECT_EQ(f.path().string().find(".tmp."), std::string::npos) << f.path();
+
+    const int qstatus = run_bodt("quality " + p.string(), output);
+    EXPECT_GT(qstatus, 0) << bad.name;
+    EXPECT_LT(qstatus, 128) << bad.name;
+  }
+}
+
+TEST(CommandLine, FailedWriteKeepsExistingOutput)
+{
+  const fs::path good = write_file("good.mesh", good_mesh);
+  const fs::path bad = write_file("bad.mesh", with_line(good_mesh, 7, "0 nan 0 1"));
+  const fs::path out = write_file("existing_output.mesh", "precious");
+  std::string output;
+  EXPECT_EQ(run_bodt("convert " + bad.string() + " " + out.string(), output), 1);
+  std::ifstream in(out);
+  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(content, "precious");
+  EXPECT_EQ(run_bodt("convert " + good.string() + " " + out.string(), output), 0) << output;
+  EXPECT_EQ(CGAL::BODT_3::IO::read_medit(out.string()).tets.size(), 2u);
+}
+
+TEST(CommandLine, UsageErrorsExitWithStatusTwo)
+{
+  std::string output;
+  EXPECT_EQ(run_bodt("", output), 2);
+  EXPECT_EQ(run_bodt("frobnicate", output), 2);
+  EXPECT_EQ(run_bodt("quality", output), 2);
+  EXPECT_EQ(run_bodt("quality a.mesh --bogus", output), 2);
+  EXPECT_EQ(run_bodt("convert a.mesh out.xyz", output), 2);
+  for(const char* cmd : {"quality", "convert"})
+  {
+    EXPECT_EQ(run_bodt(std::string(cmd) + " --help", output), 0);
+    EXPECT_NE(output.find("usage: bodt"), std::string::npos);
+  }
+}
+
+TEST(CommandLine, QualityJsonOnGoodMesh)
+{
+  const fs::path good = write_file("good.mesh", good_mesh);
+  std::string output;
+  ASSERT_EQ(run_bodt("quality --json " + good.string(), output), 0) << output;
+  EXPECT_NE(output.find("\"num_tets\": 2"), std::string::npos) << output;
+  EXPECT_NE(output.find("\"inverted_tets\": 0"), std::string::npos) << output;
+}

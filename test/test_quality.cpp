@@ -1,0 +1,182 @@
+// Quality measures: dihedral angles against CGAL's independent
+// approximate_dihedral_angle, counts, volumes, exact inversion test, and the
+// real meshes of ../shared/data when present.
+#include <CGAL/BODT_3/IO/medit.h>
+#include <CGAL/BODT_3/mesh_quality.h>
+
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Random.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+using CGAL::BODT_3::Tet_mesh;
+using Point = Tet_mesh::Point;
+
+namespace {
+
+// Dihedral angle at edge (a, b) of tetrahedron (a, b, c, d), from CGAL.
+double cgal_angle(const Point& a, const Point& b, const Point& c, const Point& d)
+{
+  return std::abs(CGAL::approximate_dihedral_angle(a, b, c, d));
+}
+
+std::pair<double, double> independent_min_max(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  const Point* p[4] = {&p0, &p1, &p2, &p3};
+  double lo = 180, hi = 0;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j)
+    {
+      int k = 0;
+      while(k == i || k == j) ++k;
+      int l = 6 - i - j - k;
+      const double a = cgal_angle(*p[i], *p[j], *p[k], *p[l]);
+      lo = std::min(lo, a);
+      hi = std::max(hi, a);
+    }
+  return {lo, hi};
+}
+
+Tet_mesh one_tet(const Point& a, const Point& b, const Point& c, const Point& d, int label = 1)
+{
+  Tet_mesh m;
+  m.points = {a, b, c, d};
+  m.vertex_refs = {0, 0, 0, 0};
+  m.tets = {{0, 1, 2, 3}};
+  m.tet_labels = {label};
+  return m;
+}
+
+} // namespace
+
+TEST(DihedralAngles, RegularTetrahedron)
+{
+  const auto a = CGAL::BODT_3::dihedral_angles(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1));
+  const double expected = std::acos(1.0 / 3.0) * 180.0 / CGAL_PI;   // 70.5288 degrees
+  for(double x : a) EXPECT_NEAR(x, expected, 1e-12);
+  EXPECT_NEAR(CGAL::BODT_3::radius_ratio(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)), 1.0,
+              1e-12);
+}
+
+TEST(DihedralAngles, AgreeWithCGALOnRandomTetrahedra)
+{
+  CGAL::Random rng(7);
+  for(int n = 0; n < 2000; ++n)
+  {
+    Point p[4];
+    for(auto& q : p) q = Point(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) == CGAL::COPLANAR) continue;
+    const auto mine = CGAL::BODT_3::min_max_dihedral_angle(p[0], p[1], p[2], p[3]);
+    const auto ref = independent_min_max(p[0], p[1], p[2], p[3]);
+    EXPECT_NEAR(mine.first, ref.first, 1e-7);
+    EXPECT_NEAR(mine.second, ref.second, 1e-7);
+  }
+}
+
+TEST(DihedralAngles, RightCornerTetrahedron)
+{
+  // Three right angles at the edges through the origin, and arccos(1/sqrt(3)) on the others.
+  const auto a = CGAL::BODT_3::dihedral_angles(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1));
+  EXPECT_NEAR(a[0], 90, 1e-12);
+  EXPECT_NEAR(a[1], 90, 1e-12);
+  EXPECT_NEAR(a[2], 90, 1e-12);
+  const double other = std::acos(1.0 / std::sqrt(3.0)) * 180 / CGAL_PI;
+  EXPECT_NEAR(a[3], other, 1e-12);
+  EXPECT_NEAR(a[4], other, 1e-12);
+  EXPECT_NEAR(a[5], other, 1e-12);
+}
+
+TEST(MeshQuality, CountsVolumeHistogramAndInversion)
+{
+  Tet_mesh m;
+  m.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(1, 1, 1), Point(0.5, 0.5, 1e-3)};
+  m.vertex_refs.assign(6, 0);
+  m.tets = {{0, 1, 2, 3}, {1, 2, 3, 4}, {0, 2, 1, 5}};
+  m.tet_labels = {1, 2, 2};
+  const auto r = CGAL::BODT_3::mesh_quality(m);
+  EXPECT_EQ(r.num_tets, 3u);
+  EXPECT_EQ(r.num_vertices, 6u);
+  EXPECT_NEAR(r.volume_per_subdomain.at(1), 1.0 / 6.0, 1e-15);
+  // Signed volumes: the third tetrahedron counts negatively.
+  EXPECT_NEAR(r.volume_per_subdomain.at(2), 1.0 / 3.0 - 0.5 * 1e-3 / 3.0, 1e-15);
+  std::size_t total = 0;
+  for(auto c : r.histogram) total += c;
+  EXPECT_EQ(total, 18u);
+  // (0, 2, 1, 5) is negatively oriented (5 lies above the z = 0 face seen from its other side).
+  EXPECT_EQ(CGAL::orientation(m.points[0], m.points[2], m.points[1], m.points[5]), CGAL::NEGATIVE);
+  EXPECT_EQ(r.inverted_tets, 1u);
+  EXPECT_EQ(r.tets_below_small, 1u);   // the flat-ish third tetrahedron
+  EXPECT_NEAR(r.volume, CGAL::volume(m.points[0], m.points[1], m.points[2], m.points[3]) +
+                            CGAL::volume(m.points[1], m.points[2], m.points[3], m.points[4]) +
+                            CGAL::volume(m.points[0], m.points[2], m.points[1], m.points[5]),
+              1e-15);
+}
+
+TEST(MeshQuality, FlatTetrahedronIsCountedAsInverted)
+{
+  const auto m = one_tet(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0));
+  const auto r = CGAL::BODT_3::mesh_quality(m);
+  EXPECT_EQ(r.inverted_tets, 1u);
+  EXPECT_EQ(r.min_dihedral_deg, 0.0);
+  EXPECT_EQ(r.max_dihedral_deg, 180.0);
+}
+
+TEST(MeshQuality, LabelZeroIsOutsideUnlessAllAreZero)
+{
+  Tet_mesh m = one_tet(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), 0);
+  EXPECT_EQ(CGAL::BODT_3::mesh_quality(m).num_tets, 1u);
+  m.points.push_back(Point(1, 1, 1));
+  m.vertex_refs.push_back(0);
+  m.tets.push_back({1, 2, 3, 4});
+  m.tet_labels.push_back(3);
+  const auto r = CGAL::BODT_3::mesh_quality(m);
+  EXPECT_EQ(r.num_tets, 1u);
+  EXPECT_EQ(r.num_vertices, 4u);
+  EXPECT_EQ(r.volume_per_subdomain.count(0), 0u);
+  EXPECT_NEAR(r.volume, 1.0 / 3.0, 1e-15);
+}
+
+TEST(MeshQuality, JsonHasTheDocumentedKeys)
+{
+  const auto r = CGAL::BODT_3::mesh_quality(one_tet(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)));
+  const std::string j = CGAL::BODT_3::to_json(r);
+  for(const char* key : {"\"num_vertices\": 4", "\"num_tets\": 1", "\"min_dihedral_deg\"", "\"max_dihedral_deg\"",
+                         "\"tets_below_10deg\": 0", "\"tets_above_170deg\": 0", "\"volume\"",
+                         "\"inverted_tets\": 0", "\"histogram\""})
+    EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;
+}
+
+// Every real mesh: our min/max dihedral angles agree with CGAL's independent
+// per-edge computation to 0.01 degree, and no tetrahedron is inverted.
+TEST(MeshQuality, RealMeshesAgreeWithIndependentComputation)
+{
+  const std::filesystem::path dir(BODT_SHARED_DATA);
+  if(!std::filesystem::exists(dir)) GTEST_SKIP() << "no " << dir;
+  int checked = 0;
+  for(const auto& entry : std::filesystem::directory_iterator(dir))
+  {
+    if(entry.path().extension() != ".mesh") continue;
+    std::ostringstream warnings;
+    const Tet_mesh m = CGAL::BODT_3::IO::read_medit(entry.path().string(), warnings);
+    const auto r = CGAL::BODT_3::mesh_quality(m);
+    const bool all_zero = m.all_labels_zero();
+    double lo = 180, hi = 0;
+    for(std::size_t t = 0; t < m.tets.size(); ++t)
+    {
+      if(!m.in_mesh(t, all_zero)) continue;
+      const auto& c = m.tets[t];
+      const auto mm = independent_min_max(m.points[c[0]], m.points[c[1]], m.points[c[2]], m.points[c[3]]);
+      lo = std::min(lo, mm.first);
+      hi = std::max(hi, mm.second);
+    }
+    EXPECT_NEAR(r.min_dihedral_deg, lo, 0.01) << entry.path();
+    EXPECT_NEAR(r.max_dihedral_deg, hi, 0.01) << entry.path();
+    EXPECT_EQ(r.inverted_tets, 0u) << entry.path();
+    ++checked;
+  }
+  EXPECT_GE(checked, 1);
+}
