@@ -33,6 +33,7 @@ private:
 
 int quality(const std::vector<std::string>& args);
 int convert(const std::vector<std::string>& args);
+int smooth(const std::vector<std::string>& args);
 
 } // namespace bodt_cli
 

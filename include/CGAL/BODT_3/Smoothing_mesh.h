@@ -1,0 +1,179 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_SMOOTHING_MESH_H
+#define CGAL_BODT_3_SMOOTHING_MESH_H
+
+#include <CGAL/BODT_3/Vertex_star.h>
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+namespace internal {
+
+// For a positively oriented cell (p0, p1, p2, p3), kOpposite[j] lists the facet
+// opposite p_j so that orientation(p_j, a, b, c) is positive.
+constexpr int kOpposite[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+struct Facet_key_hash
+{
+  std::size_t operator()(const std::array<int, 3>& a) const
+  {
+    std::size_t h = static_cast<std::size_t>(a[0]);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::size_t>(a[1]);
+    return h * 0x9E3779B97F4A7C15ull ^ static_cast<std::size_t>(a[2]);
+  }
+};
+
+inline std::array<int, 3> sorted(std::array<int, 3> f)
+{
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+} // namespace internal
+
+/// The mesh as the smoother works on it: points and finite cells in flat arrays,
+/// with the incidences each vertex needs precomputed once, since smoothing moves
+/// points and never changes the connectivity. Every finite cell is here, in the
+/// mesh or not (`in_mesh`), because every one of them must stay positively
+/// oriented. Built by the adapters for `Tet_mesh`, `Mesh_complex_3_in_triangulation_3`
+/// and `Triangulation_3`; call `build_incidences()` after filling the first block.
+template <class K>
+struct Smoothing_mesh
+{
+  using Point = typename K::Point_3;
+
+  struct Incidence
+  {
+    int cell;
+    std::array<int, 3> face;   // orientation(vertex, face) is positive
+  };
+
+  /// A hull facet (a, b, c) containing the vertex, with the interior on its
+  /// positive side, and the far vertex w of a neighbouring hull facet: moving the
+  /// vertex must keep orientation(a, b, c, w) non-negative (a convex hull stays one).
+  using Hull_check = std::array<int, 4>;
+
+  // Filled by the adapters.
+  std::vector<Point> points;
+  std::vector<std::array<int, 4>> cells;   // finite cells, positively oriented
+  std::vector<char> in_mesh;               // per cell
+  std::vector<int> subdomain;              // per cell, meaningful when in_mesh
+  std::vector<Hull_check> hull_checks;     // empty unless the input is a triangulation
+
+  // Derived by build_incidences().
+  std::vector<int> incidence_begin;        // per vertex, into `incidences`
+  std::vector<Incidence> incidences;
+  std::vector<int> boundary_begin;         // per vertex, into `boundary_facets`
+  std::vector<std::array<int, 2>> boundary_facets;   // (a, b): (x0, a, b) outward of the mesh
+  std::vector<int> hull_begin;             // per vertex, into `vertex_hull_checks`
+  std::vector<Hull_check> vertex_hull_checks;
+  std::vector<int> neighbor;               // per cell facet (4 c + i): cell across, or -1
+
+  std::size_t number_of_vertices() const { return points.size(); }
+
+  /// Whether the facet of `cell` opposite local vertex `i` separates the mesh from
+  /// what is not the mesh (its outside, or nothing).
+  bool is_mesh_boundary(int cell, int i) const
+  {
+    const int n = neighbor[4 * cell + i];
+    return in_mesh[cell] && (n < 0 || !in_mesh[n]);
+  }
+
+  void build_incidences()
+  {
+    const int nv = static_cast<int>(points.size());
+    const int nc = static_cast<int>(cells.size());
+
+    // Cell adjacency through shared facets.
+    neighbor.assign(4 * cells.size(), -1);
+    std::unordered_map<std::array<int, 3>, int, internal::Facet_key_hash> open;
+    open.reserve(2 * cells.size());
+    for(int c = 0; c < nc; ++c)
+      for(int i = 0; i < 4; ++i)
+      {
+        const auto& o = internal::kOpposite[i];
+        const auto key = internal::sorted({cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]});
+        auto it = open.find(key);
+        if(it == open.end())
+          open.emplace(key, 4 * c + i);
+        else
+        {
+          neighbor[4 * c + i] = it->second / 4;
+          neighbor[it->second] = c;
+          open.erase(it);
+        }
+      }
+
+    // Vertex -> incident cells, with the face opposite the vertex.
+    incidence_begin.assign(nv + 1, 0);
+    for(const auto& c : cells)
+      for(int v : c) ++incidence_begin[v + 1];
+    for(int v = 0; v < nv; ++v) incidence_begin[v + 1] += incidence_begin[v];
+    incidences.resize(incidence_begin[nv]);
+    std::vector<int> fill(incidence_begin.begin(), incidence_begin.end() - 1);
+    for(int c = 0; c < nc; ++c)
+      for(int j = 0; j < 4; ++j)
+      {
+        const auto& o = internal::kOpposite[j];
+        incidences[fill[cells[c][j]]++] = {c, {cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]}};
+      }
+
+    // Vertex -> boundary facets of the mesh around it, oriented outward.
+    std::vector<std::vector<std::array<int, 2>>> per_vertex(nv);
+    for(int c = 0; c < nc; ++c)
+      for(int i = 0; i < 4; ++i)
+      {
+        if(!is_mesh_boundary(c, i)) continue;
+        // kOpposite[i] is oriented with p_i on its negative side: its normal points out.
+        const auto& o = internal::kOpposite[i];
+        const int f[3] = {cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]};
+        for(int k = 0; k < 3; ++k)
+          per_vertex[f[k]].push_back({f[(k + 1) % 3], f[(k + 2) % 3]});
+      }
+    boundary_begin.assign(nv + 1, 0);
+    boundary_facets.clear();
+    for(int v = 0; v < nv; ++v)
+    {
+      boundary_facets.insert(boundary_facets.end(), per_vertex[v].begin(), per_vertex[v].end());
+      boundary_begin[v + 1] = static_cast<int>(boundary_facets.size());
+    }
+
+    // Vertex -> hull checks involving it as a facet vertex.
+    std::vector<std::vector<Hull_check>> hull_per_vertex(nv);
+    for(const Hull_check& h : hull_checks)
+      for(int k = 0; k < 3; ++k) hull_per_vertex[h[k]].push_back(h);
+    hull_begin.assign(nv + 1, 0);
+    vertex_hull_checks.clear();
+    for(int v = 0; v < nv; ++v)
+    {
+      vertex_hull_checks.insert(vertex_hull_checks.end(), hull_per_vertex[v].begin(), hull_per_vertex[v].end());
+      hull_begin[v + 1] = static_cast<int>(vertex_hull_checks.size());
+    }
+  }
+
+  /// Fills `star` with the mesh cells around `v` and the boundary facets through it.
+  void gather_star(int v, Vertex_star<K>& star) const
+  {
+    star.clear();
+    star.x0 = points[v];
+    for(int k = incidence_begin[v]; k < incidence_begin[v + 1]; ++k)
+    {
+      const Incidence& inc = incidences[k];
+      if(!in_mesh[inc.cell]) continue;
+      star.cells.push_back({points[inc.face[0]], points[inc.face[1]], points[inc.face[2]], subdomain[inc.cell]});
+    }
+    for(int k = boundary_begin[v]; k < boundary_begin[v + 1]; ++k)
+      star.boundary.push_back({points[boundary_facets[k][0]], points[boundary_facets[k][1]]});
+  }
+};
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_SMOOTHING_MESH_H

@@ -1,0 +1,234 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_VERTEX_CLASSIFICATION_H
+#define CGAL_BODT_3_VERTEX_CLASSIFICATION_H
+
+#include <CGAL/BODT_3/Smoothing_mesh.h>
+#include <CGAL/BODT_3/Tensor_voting.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <set>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// How a vertex may move.
+enum class Vertex_kind : unsigned char
+{
+  fixed,      // corners, non-manifold points, vertices of no mesh cell, or not allowed to move
+  interior,   // inside one subdomain: ODT (Algorithm 1)
+  surface,    // on the boundary or on an interface: basic B-ODT (Algorithm 2)
+  feature     // on a feature curve: advanced B-ODT (Algorithm 3)
+};
+
+/// What the input knows about its features. Every member may stay empty.
+struct Feature_hints
+{
+  /// Per vertex, Mesh_3's dimension (3 interior, 2 surface, 1 curve, 0 corner),
+  /// or -1 where unknown.
+  std::vector<signed char> dimension;
+  /// Feature edges (vertex pairs): Mesh_3 curve edges, or a file's `Edges`.
+  std::vector<std::array<int, 2>> feature_edges;
+  /// Vertices that must not move: Mesh_3 corners, a file's `Corners` and `RequiredVertices`.
+  std::vector<int> corners;
+  /// Surface patch of boundary and interface facets (sorted vertex triple -> label).
+  std::vector<std::pair<std::array<int, 3>, int>> facet_patches;
+};
+
+struct Classification_options
+{
+  bool move_boundary = true;        // false: only interior vertices move (the ODT baseline)
+  bool preserve_features = true;    // false: every boundary vertex uses Algorithm 2
+  Tensor_voting_thresholds tensor_voting;
+};
+
+/// The result: a kind per vertex, and for feature vertices whose curve is known,
+/// its two neighbours along the curve (-1 when the direction comes from tensor voting).
+struct Vertex_classification
+{
+  std::vector<Vertex_kind> kind;
+  std::vector<std::array<int, 2>> curve_neighbors;
+  bool used_tensor_voting = false;
+  std::size_t non_manifold = 0;
+
+  std::size_t count(Vertex_kind k) const { return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), k)); }
+};
+
+namespace internal {
+
+struct Edge_hash
+{
+  std::size_t operator()(const std::pair<int, int>& e) const
+  {
+    return static_cast<std::size_t>(e.first) * 0x9E3779B97F4A7C15ull ^ static_cast<std::size_t>(e.second);
+  }
+};
+
+inline std::pair<int, int> edge_key(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
+
+// Whether oriented facets (x0, a, b) around x0 form exactly one closed cycle.
+inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
+{
+  if(facets.empty()) return true;
+  std::unordered_map<int, int> next;
+  for(const auto& f : facets)
+    if(!next.emplace(f[0], f[1]).second) return false;
+  int v = facets.front()[0];
+  for(std::size_t steps = 0; steps < facets.size(); ++steps)
+  {
+    auto it = next.find(v);
+    if(it == next.end()) return false;
+    v = it->second;
+  }
+  return v == facets.front()[0];
+}
+
+} // namespace internal
+
+/// Classifies every vertex of `mesh` (see `Vertex_kind`). The rules, in order:
+/// 1. A vertex of no mesh cell is fixed; so is every non-interior vertex when only
+///    interior vertices move.
+/// 2. For each subdomain around the vertex, the boundary of that subdomain's part
+///    of the star must be one closed cycle of triangles; otherwise (a non-manifold
+///    point) the vertex is fixed.
+/// 3. Inside one subdomain, with no boundary facet: interior, unless the hints say
+///    it lies on a feature.
+/// 4. With feature preservation on, features come from the hints when the input has
+///    any (Mesh_3 dimensions, feature edges, corners, or two or more surface patches,
+///    where an edge whose facets belong to two or more patches is a feature edge);
+///    otherwise from tensor voting (eq. 11). A vertex on exactly two feature edges
+///    lies on a feature curve; on one, or three and more, it is a corner.
+/// 5. Every other vertex is a surface vertex.
+template <class K>
+Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Feature_hints& hints,
+                                        const Classification_options& opt)
+{
+  const int nv = static_cast<int>(mesh.number_of_vertices());
+  Vertex_classification out;
+  out.kind.assign(nv, Vertex_kind::fixed);
+  out.curve_neighbors.assign(nv, {-1, -1});
+
+  // Patches of boundary and interface facets. A facet the hints do not label gets a
+  // label from the pair of subdomains it separates, so that interfaces count as patches.
+  std::unordered_map<std::array<int, 3>, int, internal::Facet_key_hash> patch;
+  for(const auto& fp : hints.facet_patches) patch.emplace(internal::sorted(fp.first), fp.second);
+  std::set<int> patch_labels;
+  std::unordered_map<std::pair<int, int>, std::set<int>, internal::Edge_hash> edge_patches;
+  for(int c = 0; c < static_cast<int>(mesh.cells.size()); ++c)
+  {
+    if(!mesh.in_mesh[c]) continue;
+    for(int i = 0; i < 4; ++i)
+    {
+      const int n = mesh.neighbor[4 * c + i];
+      const bool outside = n < 0 || !mesh.in_mesh[n];
+      if(!outside && mesh.subdomain[n] == mesh.subdomain[c]) continue;
+      const auto& o = internal::kOpposite[i];
+      const std::array<int, 3> f = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
+      const auto it = patch.find(internal::sorted(f));
+      int label;
+      if(it != patch.end())
+        label = it->second;
+      else
+      {
+        const int s0 = mesh.subdomain[c], s1 = outside ? 0 : mesh.subdomain[n];
+        label = -1 - (std::min(s0, s1) * 4099 + std::max(s0, s1));   // disjoint from file labels >= 0
+      }
+      patch_labels.insert(label);
+      for(int k = 0; k < 3; ++k) edge_patches[internal::edge_key(f[k], f[(k + 1) % 3])].insert(label);
+    }
+  }
+
+  const bool hints_dims = std::any_of(hints.dimension.begin(), hints.dimension.end(),
+                                      [](signed char d) { return d >= 0; });
+  const bool has_feature_info = hints_dims || !hints.feature_edges.empty() || !hints.corners.empty() ||
+                                patch_labels.size() >= 2;
+  out.used_tensor_voting = opt.preserve_features && opt.move_boundary && !has_feature_info;
+
+  // Feature edges and the feature degree of each vertex.
+  std::unordered_set<std::pair<int, int>, internal::Edge_hash> feature_edges;
+  if(opt.preserve_features && has_feature_info)
+  {
+    for(const auto& e : hints.feature_edges)
+      if(e[0] != e[1]) feature_edges.insert(internal::edge_key(e[0], e[1]));
+    for(const auto& ep : edge_patches)
+      if(ep.second.size() >= 2) feature_edges.insert(ep.first);
+  }
+  std::vector<std::vector<int>> feature_nbrs(nv);
+  for(const auto& e : feature_edges)
+  {
+    feature_nbrs[e.first].push_back(e.second);
+    feature_nbrs[e.second].push_back(e.first);
+  }
+  std::vector<char> is_corner(nv, 0);
+  if(opt.preserve_features)
+    for(int v : hints.corners)
+      if(v >= 0 && v < nv) is_corner[v] = 1;
+
+  Vertex_star<K> star;
+  for(int v = 0; v < nv; ++v)
+  {
+    // Subdomains around v, and the boundary of each one's part of the star.
+    std::map<int, std::vector<std::array<int, 2>>> side_boundary;
+    for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
+    {
+      const int c = mesh.incidences[k].cell;
+      if(!mesh.in_mesh[c]) continue;
+      auto& facets = side_boundary[mesh.subdomain[c]];
+      for(int i = 0; i < 4; ++i)
+      {
+        if(mesh.cells[c][i] == v) continue;
+        const int n = mesh.neighbor[4 * c + i];
+        if(n >= 0 && mesh.in_mesh[n] && mesh.subdomain[n] == mesh.subdomain[c]) continue;
+        const auto& o = internal::kOpposite[i];
+        const int f[3] = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
+        for(int j = 0; j < 3; ++j)
+          if(f[j] == v) facets.push_back({f[(j + 1) % 3], f[(j + 2) % 3]});
+      }
+    }
+    if(side_boundary.empty()) continue;                          // rule 1
+    const bool interior = side_boundary.size() == 1 && side_boundary.begin()->second.empty();
+    if(!interior && !opt.move_boundary) continue;
+    bool manifold = true;
+    for(const auto& side : side_boundary) manifold = manifold && internal::is_one_cycle(side.second);
+    if(!manifold)                                                // rule 2
+    {
+      ++out.non_manifold;
+      continue;
+    }
+
+    const signed char dim = v < static_cast<int>(hints.dimension.size()) ? hints.dimension[v] : -1;
+    Vertex_kind kind = interior ? Vertex_kind::interior : Vertex_kind::surface;
+    if(opt.preserve_features)
+    {
+      const std::size_t degree = feature_nbrs[v].size();
+      if(is_corner[v] || dim == 0 || degree == 1 || degree >= 3)
+        kind = Vertex_kind::fixed;
+      else if(degree == 2)
+      {
+        kind = Vertex_kind::feature;
+        out.curve_neighbors[v] = {feature_nbrs[v][0], feature_nbrs[v][1]};
+      }
+      else if(dim == 1)
+        kind = Vertex_kind::fixed;                               // a curve vertex whose curve is unknown
+      else if(out.used_tensor_voting && !interior && mesh.boundary_begin[v + 1] > mesh.boundary_begin[v])
+      {
+        mesh.gather_star(v, star);
+        const Voted_kind voted = tensor_vote(star, opt.tensor_voting).kind;
+        kind = voted == Voted_kind::corner ? Vertex_kind::fixed
+               : voted == Voted_kind::feature ? Vertex_kind::feature : Vertex_kind::surface;
+      }
+    }
+    out.kind[v] = kind;
+  }
+  return out;
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_VERTEX_CLASSIFICATION_H

@@ -1,0 +1,90 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_VOLUME_PRESERVING_MOVE_H
+#define CGAL_BODT_3_VOLUME_PRESERVING_MOVE_H
+
+#include <CGAL/BODT_3/Bodt_feature_move.h>
+#include <CGAL/BODT_3/Bodt_surface_move.h>
+#include <CGAL/BODT_3/Odt_move.h>
+#include <CGAL/BODT_3/Vertex_classification.h>
+#include <CGAL/BODT_3/Vertex_star.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// Chooses and applies the move of a vertex so that the volume of every
+/// subdomain around it is kept. Each subdomain j of the star has a (B.1) normal
+/// n_j (`Vertex_star::subdomain_normal`); a move X keeps subdomain j's volume iff
+/// X . n_j = 0. So the vertex moves in the orthogonal complement of span{n_j}:
+///  - rank 0 (inside one subdomain): ODT, Algorithm 1;
+///  - rank 1 (on the boundary, or on an interface, where n_1 = -n_2): the tangent
+///    plane, Algorithm 2 (Algorithm 3 along the feature direction projected on the
+///    plane for a feature vertex);
+///  - rank 2 (where two subdomains meet the outside, or three meet): the line
+///    n_1 x n_2, Algorithm 3; a feature vertex moves there only if its feature
+///    direction is within 60 degrees of that line;
+///  - rank 3: no move.
+/// `feature_direction` is used for feature vertices only.
+struct Volume_preserving_move
+{
+  template <class K>
+  typename K::Vector_3 operator()(const Vertex_star<K>& star, Vertex_kind kind,
+                                  const typename K::Vector_3& feature_direction) const
+  {
+    using Vector = typename K::Vector_3;
+    const Vector zero(0, 0, 0);
+    if(kind == Vertex_kind::fixed || star.cells.empty()) return zero;
+    if(kind == Vertex_kind::interior) return Odt_move()(star);
+
+    // Orthonormal basis of span{n_j}. A normal that vanishes (a part surrounding
+    // x0) or repeats another up to round-off (two sides of an interface) adds no
+    // direction: residuals below 1e-9 of the star's total face area are dropped.
+    double area_scale = 0;
+    for(const auto& cell : star.cells)
+      area_scale += 0.5 * std::sqrt(CGAL::cross_product(cell.b - cell.a, cell.c - cell.a).squared_length());
+    Vector basis[3];
+    int rank = 0;
+    int seen[8];
+    int nseen = 0;
+    for(const auto& cell : star.cells)
+    {
+      bool known = false;
+      for(int i = 0; i < nseen; ++i) known = known || seen[i] == cell.subdomain;
+      if(known) continue;
+      if(nseen == 8) return zero;   // eight subdomains at one point: leave it
+      seen[nseen++] = cell.subdomain;
+      Vector n = star.subdomain_normal(cell.subdomain);
+      for(int i = 0; i < rank; ++i) n = n - (n * basis[i]) * basis[i];
+      const double res = std::sqrt(n.squared_length());
+      if(res > 1e-9 * area_scale && rank < 3) basis[rank++] = n / res;
+    }
+
+    if(rank == 0)
+      return kind == Vertex_kind::feature ? Bodt_feature_move()(star, feature_direction) : Odt_move()(star);
+    if(rank == 1)
+    {
+      if(kind == Vertex_kind::surface) return Bodt_surface_move()(star, basis[0]);
+      const Vector d = feature_direction - (feature_direction * basis[0]) * basis[0];
+      return Bodt_feature_move()(star, d);
+    }
+    if(rank == 2)
+    {
+      const Vector line = CGAL::cross_product(basis[0], basis[1]);
+      if(kind == Vertex_kind::feature)
+      {
+        const double len = std::sqrt(feature_direction.squared_length());
+        if(!(len > 0) || std::abs(feature_direction * line) < 0.5 * len) return zero;
+      }
+      return Bodt_feature_move()(star, line);
+    }
+    return zero;
+  }
+};
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_VOLUME_PRESERVING_MOVE_H
