@@ -80,8 +80,11 @@ struct Progress_visitor
   void after_iteration(const BODT::Iteration_stats& s) const
   {
     if(quiet || s.seconds < 1.0) return;
-    std::fprintf(stderr, "bodt smooth: iteration %zu: %zu vertices moved, %zu refused, %.1f s\n", s.iteration,
-                 s.moved, s.refused, s.seconds);
+    std::fprintf(stderr,
+                 "bodt smooth: iteration %zu: %zu vertices moved, %zu refused (%zu would invert a cell, %zu would "
+                 "worsen the worst angle), %.1f s\n",
+                 s.iteration, s.moved, s.refused, s.refused_inverting_mesh_cell + s.refused_inverting_outside_cell,
+                 s.refused_worsening_quality, s.seconds);
   }
 };
 

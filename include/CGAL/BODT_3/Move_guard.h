@@ -37,6 +37,15 @@ public:
 
   static constexpr int max_halvings = 3;
 
+  /// Why the last refused position was refused.
+  enum class Refusal
+  {
+    inverts_mesh_cell,
+    inverts_outside_cell,
+    breaks_convex_hull,
+    worsens_quality
+  };
+
   Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard) : mesh_(mesh), quality_guard_(quality_guard)
   {
     if(!quality_guard_) return;
@@ -64,9 +73,13 @@ public:
         apply(v, p);
         return fraction;
       }
+      if(h == 0) first_refusal_ = last_refusal_;
     }
     return 0.0;
   }
+
+  /// Why the full-length move of the last refused vertex was refused.
+  Refusal first_refusal() const { return first_refusal_; }
 
   /// Whether `v` may go to `p` (see the class comment). Leaves its verdict on the
   /// star's cell qualities in a buffer that `apply` uses.
@@ -76,7 +89,11 @@ public:
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {
       const auto& f = m.incidences[k].face;
-      if(CGAL::orientation(p, m.points[f[0]], m.points[f[1]], m.points[f[2]]) != CGAL::POSITIVE) return false;
+      if(CGAL::orientation(p, m.points[f[0]], m.points[f[1]], m.points[f[2]]) != CGAL::POSITIVE)
+      {
+        last_refusal_ = m.in_mesh[m.incidences[k].cell] ? Refusal::inverts_mesh_cell : Refusal::inverts_outside_cell;
+        return false;
+      }
     }
     for(int k = m.hull_begin[v]; k < m.hull_begin[v + 1]; ++k)
     {
@@ -84,8 +101,13 @@ public:
       const Point& a = h[0] == v ? p : m.points[h[0]];
       const Point& b = h[1] == v ? p : m.points[h[1]];
       const Point& c = h[2] == v ? p : m.points[h[2]];
-      if(CGAL::orientation(a, b, c, m.points[h[3]]) == CGAL::NEGATIVE) return false;
+      if(CGAL::orientation(a, b, c, m.points[h[3]]) == CGAL::NEGATIVE)
+      {
+        last_refusal_ = Refusal::breaks_convex_hull;
+        return false;
+      }
     }
+    last_refusal_ = Refusal::worsens_quality;
     if(!quality_guard_) return true;
 
     double old_max = -2, old_min = 2, new_max = -2, new_min = 2;
@@ -153,6 +175,8 @@ private:
   bool quality_guard_;
   std::vector<double> max_cos_, min_cos_;
   std::vector<std::pair<double, double>> scratch_;
+  Refusal last_refusal_ = Refusal::worsens_quality;
+  Refusal first_refusal_ = Refusal::worsens_quality;
 };
 
 } // namespace BODT_3

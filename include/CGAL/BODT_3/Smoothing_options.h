@@ -39,6 +39,11 @@ struct Iteration_stats
   std::size_t moved = 0;              // vertices that moved
   std::size_t shortened = 0;          // of which by a shortened step
   std::size_t refused = 0;            // vertices with a move that was refused entirely
+  // Why their full-length move was refused:
+  std::size_t refused_inverting_mesh_cell = 0;
+  std::size_t refused_inverting_outside_cell = 0;   // a finite cell outside the mesh (C3T3)
+  std::size_t refused_breaking_hull = 0;
+  std::size_t refused_worsening_quality = 0;
   double max_relative_move = 0;       // largest move / local size
   double seconds = 0;                 // since the start of the smoothing
 };

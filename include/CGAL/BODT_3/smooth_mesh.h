@@ -99,6 +99,14 @@ Smoothing_result smooth_mesh(Smoothing_mesh<K>& mesh, const Feature_hints& hints
       if(fraction == 0)
       {
         ++stats.refused;
+        using Refusal = typename Move_guard<K>::Refusal;
+        switch(guard.first_refusal())
+        {
+        case Refusal::inverts_mesh_cell: ++stats.refused_inverting_mesh_cell; break;
+        case Refusal::inverts_outside_cell: ++stats.refused_inverting_outside_cell; break;
+        case Refusal::breaks_convex_hull: ++stats.refused_breaking_hull; break;
+        case Refusal::worsens_quality: ++stats.refused_worsening_quality; break;
+        }
         continue;
       }
       ++stats.moved;

@@ -1,0 +1,140 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_BOUNDARY_DISTANCE_H
+#define CGAL_BODT_3_BOUNDARY_DISTANCE_H
+
+#include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/mesh_quality.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Bbox_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+using Boundary_triangles = std::vector<Tet_mesh::Kernel::Triangle_3>;
+
+/// The boundary and interface triangles of a `Tet_mesh`: faces between a mesh
+/// tetrahedron and a non-mesh one (or none), and faces between two subdomains.
+inline Boundary_triangles boundary_triangles(const Tet_mesh& mesh)
+{
+  const bool all_zero = mesh.all_labels_zero();
+  std::map<std::array<int, 3>, std::vector<int>> sides;   // sorted face -> labels of its tets (-1: outside)
+  for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+  {
+    const int label = mesh.in_mesh(t, all_zero) ? mesh.tet_labels[t] : -1;
+    for(int k = 0; k < 4; ++k)
+    {
+      std::array<int, 3> f;
+      for(int j = 0, m = 0; j < 4; ++j)
+        if(j != k) f[m++] = mesh.tets[t][j];
+      std::array<int, 3> key = f;
+      std::sort(key.begin(), key.end());
+      sides[key].push_back(label);
+    }
+  }
+  Boundary_triangles out;
+  for(const auto& s : sides)
+  {
+    const int a = s.second[0], b = s.second.size() > 1 ? s.second[1] : -1;
+    if(a == b || (a < 0 && b < 0)) continue;
+    const auto& f = s.first;
+    out.emplace_back(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]);
+  }
+  return out;
+}
+
+/// The facets in a C3T3's complex: its boundary and interface triangles.
+template <class C3T3>
+std::enable_if_t<internal::Is_c3t3<C3T3>::value, Boundary_triangles> boundary_triangles(const C3T3& c3t3)
+{
+  auto cp = c3t3.triangulation().geom_traits().construct_point_3_object();
+  Boundary_triangles out;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
+    std::array<Tet_mesh::Point, 3> p;
+    for(int k = 0, m = 0; k < 4; ++k)
+      if(k != f->second) p[m++] = cp(f->first->vertex(k)->point());
+    out.emplace_back(p[0], p[1], p[2]);
+  }
+  return out;
+}
+
+/// The convex hull facets of a `Triangulation_3`.
+template <class Tr>
+std::enable_if_t<!internal::Is_c3t3<Tr>::value && !std::is_same<Tr, Tet_mesh>::value, Boundary_triangles>
+boundary_triangles(const Tr& tr)
+{
+  auto cp = tr.geom_traits().construct_point_3_object();
+  Boundary_triangles out;
+  for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
+  {
+    if(!c->has_vertex(tr.infinite_vertex())) continue;
+    const int i = c->index(tr.infinite_vertex());
+    std::array<Tet_mesh::Point, 3> p;
+    for(int k = 0, m = 0; k < 4; ++k)
+      if(k != i) p[m++] = cp(c->vertex(k)->point());
+    out.emplace_back(p[0], p[1], p[2]);
+  }
+  return out;
+}
+
+/// Largest side of the bounding box of a set of triangles.
+inline double largest_bbox_side(const Boundary_triangles& t)
+{
+  CGAL::Bbox_3 box;
+  for(const auto& tri : t) box += tri.bbox();
+  return std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+}
+
+/// Symmetric Hausdorff distance between two triangle sets, approximated by
+/// sampling each triangle on a barycentric grid (`samples` subdivisions per side,
+/// vertices included) and measuring exact point-to-surface distances with an
+/// AABB tree. The sampling error is at most the grid spacing times the largest
+/// change in the other surface's distance, which is far below what it measures
+/// here (moves of a fraction of an edge).
+inline double hausdorff_distance(const Boundary_triangles& a, const Boundary_triangles& b, int samples = 6)
+{
+  using K = Tet_mesh::Kernel;
+  using Primitive = CGAL::AABB_triangle_primitive<K, Boundary_triangles::const_iterator>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+  auto one_sided = [samples](const Boundary_triangles& from, const Boundary_triangles& to) {
+    if(from.empty() || to.empty()) return 0.0;
+    Tree tree(to.begin(), to.end());
+    tree.accelerate_distance_queries();
+    double worst = 0;
+    for(const auto& t : from)
+      for(int i = 0; i <= samples; ++i)
+        for(int j = 0; i + j <= samples; ++j)
+        {
+          const double u = double(i) / samples, v = double(j) / samples, w = 1 - u - v;
+          const K::Point_3 p(u * t[0].x() + v * t[1].x() + w * t[2].x(), u * t[0].y() + v * t[1].y() + w * t[2].y(),
+                             u * t[0].z() + v * t[1].z() + w * t[2].z());
+          worst = std::max(worst, tree.squared_distance(p));
+        }
+    return std::sqrt(worst);
+  };
+  return std::max(one_sided(a, b), one_sided(b, a));
+}
+
+/// The paper's relative Hausdorff distance (Table 2): the distance between the
+/// boundary surfaces before and after, divided by the largest side of the
+/// bounding box of the surface before.
+inline double relative_hausdorff_distance(const Boundary_triangles& before, const Boundary_triangles& after)
+{
+  const double L = largest_bbox_side(before);
+  return L > 0 ? hausdorff_distance(before, after) / L : 0.0;
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_BOUNDARY_DISTANCE_H

@@ -1,0 +1,197 @@
+// B-ODT smoothing of CGAL-meshed inputs, 20 iterations: validity by exact
+// predicates, volume per subdomain, corners, feature lines, boundary distance,
+// quality never lower than the input's nor than the interior-only ODT baseline,
+// determinism. Also the paper's random sphere as a Triangulation_3.
+#include "inputs/generated_inputs.h"
+
+#include <CGAL/BODT_3/boundary_distance.h>
+#include <CGAL/BODT_3/mesh_quality.h>
+#include <CGAL/bodt_optimize_mesh_3.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace bodt_inputs;
+namespace BODT = CGAL::BODT_3;
+
+namespace {
+
+// Tolerance on angles: the guard compares cosines, the report uses atan2.
+constexpr double kAngleSlack = 1e-9;
+
+template <class Tr>
+std::vector<Point> finite_points(const Tr& tr)
+{
+  auto cp = tr.geom_traits().construct_point_3_object();
+  std::vector<Point> out;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) out.push_back(cp(v->point()));
+  return out;
+}
+
+// Every finite cell positively oriented (exact predicate) and the convex hull
+// locally convex at every hull edge: the triangulation is geometrically valid.
+template <class Tr>
+void expect_valid(const Tr& tr)
+{
+  ASSERT_TRUE(tr.tds().is_valid());
+  auto cp = tr.geom_traits().construct_point_3_object();
+  std::size_t bad = 0, reflex = 0;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+    if(CGAL::orientation(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
+                         cp(c->vertex(3)->point())) != CGAL::POSITIVE)
+      ++bad;
+  for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
+  {
+    if(!c->has_vertex(tr.infinite_vertex())) continue;
+    const int i = c->index(tr.infinite_vertex());
+    // Replacing the infinite vertex by a finite neighbour's far vertex must not give
+    // a positively oriented cell: the neighbour lies on the inner side of the facet.
+    for(int k = 0; k < 4; ++k)
+    {
+      if(k == i) continue;
+      const auto n = c->neighbor(k);
+      const auto w = n->vertex(n->index(c));
+      if(w == tr.infinite_vertex()) continue;
+      Point p[4];
+      for(int j = 0; j < 4; ++j) p[j] = j == i ? cp(w->point()) : cp(c->vertex(j)->point());
+      if(CGAL::orientation(p[0], p[1], p[2], p[3]) == CGAL::POSITIVE) ++reflex;
+    }
+  }
+  EXPECT_EQ(bad, 0u) << "inverted or flat cells";
+  EXPECT_EQ(reflex, 0u) << "reflex convex hull edges";
+}
+
+double distance_to_line(const Point& p, const Point& a, const Point& b)
+{
+  return std::sqrt(CGAL::squared_distance(p, K::Line_3(a, b)));
+}
+
+class Smoothing : public ::testing::TestWithParam<Shape>
+{};
+
+} // namespace
+
+TEST_P(Smoothing, TwentyIterationsKeepValidityVolumeFeaturesAndQuality)
+{
+  const Generated_mesh input = make_input(GetParam(), Size::small);
+  C3t3 bodt = input.c3t3;
+  C3t3 odt = input.c3t3;
+
+  const auto before = BODT::mesh_quality(input.c3t3);
+  const auto surface_before = BODT::boundary_triangles(input.c3t3);
+  const auto code = CGAL::bodt_optimize_mesh_3(bodt);
+  EXPECT_TRUE(code == CGAL::MAX_ITERATION_NUMBER_REACHED || code == CGAL::CANT_IMPROVE_ANYMORE);
+  CGAL::bodt_optimize_mesh_3(odt, CGAL::parameters::moving_vertices = BODT::Moving_vertices::INTERIOR);
+  const auto after = BODT::mesh_quality(bodt);
+  const auto after_odt = BODT::mesh_quality(odt);
+
+  expect_valid(bodt.triangulation());
+  expect_valid(odt.triangulation());
+  EXPECT_EQ(after.inverted_tets, 0u);
+
+  // Volumes: total and per subdomain.
+  EXPECT_NEAR(after.volume, before.volume, 1e-10 * before.volume);
+  ASSERT_EQ(after.volume_per_subdomain.size(), before.volume_per_subdomain.size());
+  for(const auto& kv : before.volume_per_subdomain)
+    EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second) << "subdomain " << kv.first;
+
+  // Corners to the bit; feature vertices on their feature lines.
+  const auto p0 = finite_points(input.c3t3.triangulation());
+  const auto p1 = finite_points(bodt.triangulation());
+  ASSERT_EQ(p0.size(), p1.size());
+  const double L = BODT::largest_bbox_side(surface_before);
+  const auto polylines = feature_polylines(GetParam());
+  std::size_t i = 0, corners = 0, features = 0, moved = 0;
+  for(auto v = input.c3t3.triangulation().finite_vertices_begin();
+      v != input.c3t3.triangulation().finite_vertices_end(); ++v, ++i)
+  {
+    if(p0[i] != p1[i]) ++moved;
+    const int dim = input.c3t3.in_dimension(v);
+    if(dim == 0)
+    {
+      EXPECT_EQ(p0[i], p1[i]) << "corner " << i << " moved";
+      ++corners;
+    }
+    if(dim == 1 && GetParam() == Shape::sharp_part)
+    {
+      // The straight edge the vertex started on.
+      double best = 1e300;
+      Point a(0, 0, 0), b(0, 0, 0);
+      for(const auto& pl : polylines)
+        for(std::size_t s = 0; s + 1 < pl.size(); ++s)
+        {
+          const double d = std::sqrt(CGAL::squared_distance(p0[i], K::Segment_3(pl[s], pl[s + 1])));
+          if(d < best) { best = d; a = pl[s]; b = pl[s + 1]; }
+        }
+      ASSERT_LT(best, 1e-12);
+      EXPECT_LE(distance_to_line(p1[i], a, b), 1e-9 * L) << "feature vertex " << i << " left its edge";
+      if(p0[i] != p1[i]) ++features;
+    }
+  }
+  EXPECT_GT(moved, p0.size() / 10) << "B-ODT should move many vertices";
+  if(GetParam() == Shape::sharp_part)
+  {
+    EXPECT_GT(corners, 0u);
+    EXPECT_GT(features, 0u) << "no feature vertex moved along its edge";
+  }
+
+  // Shape: relative Hausdorff distance between the boundary surfaces.
+  EXPECT_LT(BODT::relative_hausdorff_distance(surface_before, BODT::boundary_triangles(bodt)), 1e-2);
+
+  // Quality: never worse than the input, and B-ODT at least as good as ODT.
+  EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
+  EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg + kAngleSlack);
+  EXPECT_GE(after_odt.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
+  EXPECT_GE(after.min_dihedral_deg, after_odt.min_dihedral_deg - kAngleSlack);
+  EXPECT_LE(after.tets_below_small, before.tets_below_small);
+}
+
+TEST_P(Smoothing, SameInputSameOutput)
+{
+  const Generated_mesh input = make_input(GetParam(), Size::small);
+  C3t3 a = input.c3t3, b = input.c3t3;
+  CGAL::bodt_optimize_mesh_3(a);
+  CGAL::bodt_optimize_mesh_3(b);
+  EXPECT_EQ(finite_points(a.triangulation()), finite_points(b.triangulation()));
+}
+
+INSTANTIATE_TEST_SUITE_P(All, Smoothing, ::testing::ValuesIn(all_shapes()),
+                         [](const ::testing::TestParamInfo<Shape>& info) { return name(info.param); });
+
+TEST(RandomSphere, BoundaryVerticesMoveAndTheHullStaysConvex)
+{
+  Delaunay tr = make_random_sphere();
+  const auto before = BODT::mesh_quality(tr);
+  const auto surface_before = BODT::boundary_triangles(tr);
+  const auto p0 = finite_points(tr);
+  const auto code = CGAL::bodt_optimize_mesh_3(tr, CGAL::parameters::max_iteration_number = 20);
+  EXPECT_NE(code, CGAL::MESH_OPTIMIZATION_UNKNOWN_ERROR);
+  const auto after = BODT::mesh_quality(tr);
+  expect_valid(tr);
+  EXPECT_NEAR(after.volume, before.volume, 1e-10 * before.volume);
+  EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
+  EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg + kAngleSlack);
+  EXPECT_NE(finite_points(tr), p0);
+  EXPECT_LT(BODT::relative_hausdorff_distance(surface_before, BODT::boundary_triangles(tr)), 1e-2);
+}
+
+TEST(Visitor, ReportsEveryIteration)
+{
+  struct Counting_visitor
+  {
+    std::size_t* iterations;
+    std::size_t* classified;
+    void after_classification(const BODT::Smoothing_result& r) const { *classified = r.interior_vertices; }
+    void after_iteration(const BODT::Iteration_stats& s) const { *iterations = s.iteration; }
+  };
+  Generated_mesh input = make_input(Shape::sphere, Size::small);
+  std::size_t iterations = 0, classified = 0;
+  const auto code = CGAL::bodt_optimize_mesh_3(input.c3t3, CGAL::parameters::max_iteration_number = 3,
+                                               CGAL::parameters::progress_visitor =
+                                                   Counting_visitor{&iterations, &classified});
+  EXPECT_EQ(code, CGAL::MAX_ITERATION_NUMBER_REACHED);
+  EXPECT_EQ(iterations, 3u);
+  EXPECT_GT(classified, 0u);
+}
