@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/commands.h"
 
+#include <CGAL/BODT_3/IO/html_report.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/IO/write_atomically.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -34,6 +35,8 @@ const char* const smooth_help =
     "  --no-guard           accept every valid move, even one that worsens the worst angles\n"
     "  --time-limit S       stop after S seconds\n"
     "  --report R.json      write a JSON report: before/after quality, time, moves\n"
+    "  --html R.html        write a self-contained HTML page: quality table and\n"
+    "                       dihedral-angle histograms before and after, for a browser\n"
     "  --quiet              no progress or summary on stderr\n";
 
 std::size_t parse_count(const std::string& s, const char* what)
@@ -111,6 +114,8 @@ int smooth(const std::vector<std::string>& argv)
   if(args.flag("--no-guard")) opt.quality_guard = false;
   if(args.option("--time-limit", value)) opt.time_limit = parse_seconds(value);
   args.option("--report", report_path);
+  std::string html_path;
+  args.option("--html", html_path);
   const bool quiet = args.flag("--quiet");
   const auto files = args.positionals();
   if(files.size() != 1) throw Usage_error("expected exactly one input mesh");
@@ -168,6 +173,25 @@ int smooth(const std::vector<std::string>& argv)
        << ", \"non_manifold\": " << result.non_manifold_vertices << ", \"tensor_voting\": "
        << (result.used_tensor_voting ? "true" : "false") << "}}\n";
     BODT::write_atomically(report_path, [&](std::ostream& out) { out << js.str(); });
+  }
+
+  if(!html_path.empty())
+  {
+    std::string method = opt.moving_vertices == BODT::Moving_vertices::ALL ? "bodt" : "odt";
+    if(!opt.preserve_features) method += ", no feature preservation";
+    if(!opt.quality_guard) method += ", no quality guard";
+    char seconds[32], change[32];
+    std::snprintf(seconds, sizeof seconds, "%.2f s", result.seconds);
+    std::snprintf(change, sizeof change, "%.2e", volume_change);
+    const std::vector<BODT::Report_entry> run = {
+        {"method", method},
+        {"iterations", std::to_string(result.iterations) + " (" + code_name(result.code) + ")"},
+        {"time", seconds},
+        {"moved vertices", std::to_string(result.moved_vertices) + " of " + std::to_string(mesh.points.size())},
+        {"relative volume change", change},
+        {"output", output}};
+    const std::string page = BODT::html_report(files[0], before, after, run);
+    BODT::write_atomically(html_path, [&](std::ostream& out) { out << page; });
   }
   return 0;
 }

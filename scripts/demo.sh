@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Sets up and builds the command-line tool, then smooths a real third-party mesh
+# (CGAL's sphere.mesh, from Debian's libcgal-demo) and prints its quality before
+# and after, with a JSON report and an HTML page next to the output.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+bash "$here/scripts/setup.sh" bodt
+out="$here/build/demo"
+mkdir -p "$out"
+"$here/build/bodt" smooth "$here/build/data/sphere.mesh" -o "$out/sphere-bodt.mesh" --report "$out/sphere-bodt.json"
+echo "smoothed mesh: $out/sphere-bodt.mesh; report: $out/sphere-bodt.json"
