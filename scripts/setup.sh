@@ -18,14 +18,16 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
-# A real third-party mesh for the demo: CGAL's own sphere.mesh, shipped in Debian's libcgal-demo.
+# A real third-party mesh for the demo: CGAL's own sphere.mesh, shipped in Debian's libcgal-demo;
+# and CGAL's surfaces that the comparison (bench/compare) meshes.
 data="$here/build/data"
-if [ ! -f "$data/sphere.mesh" ]; then
+if [ ! -f "$data/sphere.mesh" ] || [ ! -f "$data/double-torus-example.off" ]; then
   mkdir -p "$data"
   tar -xzf /usr/share/doc/libcgal-dev/examples.tar.gz -C "$data" --strip-components=3 \
       examples/Tetrahedral_remeshing/data/sphere.mesh
   tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$data" --strip-components=2 \
-      data/meshes/fandisk.off data/meshes/elephant.off data/meshes/anchor.off
+      data/meshes/fandisk.off data/meshes/elephant.off data/meshes/anchor.off \
+      data/meshes/double-torus-example.off
 fi
 
 launcher=()

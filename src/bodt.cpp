@@ -25,6 +25,7 @@ const char* const usage =
     "  quality MESH [--json]   dihedral angles, volume and validity of a mesh\n"
     "  convert IN OUT          convert between .mesh (Medit), .msh (Gmsh) and .vtu (VTK)\n"
     "  smooth IN -o OUT        improve a mesh by B-ODT smoothing\n"
+    "  compare [MESH...]       B-ODT beside ODT and CGAL's optimizers: tables and histograms\n"
     "\n"
     "'bodt <command> --help' describes a command.\n";
 
@@ -45,6 +46,7 @@ int main(int argc, char** argv)
     if(command == "quality") return bodt_cli::quality(args);
     if(command == "convert") return bodt_cli::convert(args);
     if(command == "smooth") return bodt_cli::smooth(args);
+    if(command == "compare") return bodt_cli::compare(args);
     std::cerr << "bodt: unknown command '" << command << "'\n\n" << usage;
     return 2;
   }

@@ -6,6 +6,8 @@
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/IO/vtu.h>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,49 +23,13 @@
 #include <vector>
 
 namespace fs = std::filesystem;
+using namespace bodt_test;
 namespace IO = CGAL::BODT_3::IO;
 using CGAL::BODT_3::Mesh_io_error;
 using CGAL::BODT_3::Tet_mesh;
 using Point = Tet_mesh::Point;
 
 namespace {
-
-fs::path tmp_dir()
-{
-  fs::path d(BODT_TEST_TMP);
-  fs::create_directories(d);
-  return d;
-}
-
-fs::path write_file(const std::string& name, const std::string& text)
-{
-  const fs::path p = tmp_dir() / name;
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
-}
-
-std::string read_text(const fs::path& p)
-{
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-std::string with_line(const std::string& text, int line, const std::string& replacement)
-{
-  std::istringstream in(text);
-  std::string out, l;
-  for(int n = 1; std::getline(in, l); ++n) out += (n == line ? replacement : l) + "\n";
-  return out;
-}
-
-std::string without_line(const std::string& text, int line)
-{
-  std::istringstream in(text);
-  std::string out, l;
-  for(int n = 1; std::getline(in, l); ++n)
-    if(n != line) out += l + "\n";
-  return out;
-}
 
 std::uint64_t bits(double x)
 {
@@ -78,35 +44,17 @@ std::uint64_t bits(double x)
 Tet_mesh grid_mesh()
 {
   const int n = 3;
-  Tet_mesh m;
-  auto vid = [&](int i, int j, int k) { return (i * (n + 1) + j) * (n + 1) + k; };
+  Tet_mesh m = bodt_test::cube_grid(n, [](int i, int j, int k) { return (i + j + k) % 3; });
+  auto vid = [&](int i, int j, int k) { return bodt_test::grid_index(n, i, j, k); };
+  // Move the points off the grid by less than keeps the tetrahedra positive.
   for(int i = 0; i <= n; ++i)
     for(int j = 0; j <= n; ++j)
       for(int k = 0; k <= n; ++k)
       {
         const double e = 1e-3 * std::sin(1.0 + i + 7 * j + 13 * k);
-        m.points.emplace_back(i / 3.0 + e, j / 7.0 - e, k * 0.1 + e / 3.0);
-        m.vertex_refs.push_back((i + j + k) % 4);
+        m.points[vid(i, j, k)] = Point(i / 3.0 + e, j / 7.0 - e, k * 0.1 + e / 3.0);
+        m.vertex_refs[vid(i, j, k)] = (i + j + k) % 4;
       }
-  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-      for(int k = 0; k < n; ++k)
-        for(const auto& perm : perms)
-        {
-          int c[3] = {i, j, k};
-          std::array<int, 4> t;
-          t[0] = vid(c[0], c[1], c[2]);
-          for(int s = 0; s < 3; ++s)
-          {
-            ++c[perm[s]];
-            t[s + 1] = vid(c[0], c[1], c[2]);
-          }
-          const auto& p = m.points;
-          if(CGAL::orientation(p[t[0]], p[t[1]], p[t[2]], p[t[3]]) != CGAL::POSITIVE) std::swap(t[2], t[3]);
-          m.tets.push_back(t);
-          m.tet_labels.push_back((i + j + k) % 3);
-        }
   const int labels[3] = {0, 10, -3};
   for(int i = 0; i < n; ++i)
     for(int j = 0; j < n; ++j)
@@ -598,9 +546,9 @@ TEST(Cli, ConvertsThroughGmshAndVtu)
                  vtu = tmp_dir() / "cli.vtu";
   const Tet_mesh m = grid_mesh();
   IO::write_medit(mesh.string(), m);
-  const std::string bodt = BODT_BINARY;
+  std::string output;
   auto run = [&](const fs::path& in, const fs::path& out) {
-    return std::system((bodt + " convert " + in.string() + " " + out.string() + " 2>/dev/null").c_str());
+    return bodt_test::run_bodt("convert " + in.string() + " " + out.string(), output);
   };
   ASSERT_EQ(run(mesh, msh), 0);
   ASSERT_EQ(run(msh, back), 0);

@@ -4,6 +4,8 @@
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -12,28 +14,14 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace fs = std::filesystem;
+using namespace bodt_test;
 using CGAL::BODT_3::Mesh_io_error;
 using CGAL::BODT_3::Tet_mesh;
 using Point = Tet_mesh::Point;
 
 namespace {
-
-fs::path tmp_dir()
-{
-  fs::path d(BODT_TEST_TMP);
-  fs::create_directories(d);
-  return d;
-}
-
-fs::path write_file(const std::string& name, const std::string& text)
-{
-  const fs::path p = tmp_dir() / name;
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
-}
 
 // Two tetrahedra sharing face (2 3 4), in subdomains 1 and 2, with boundary
 // triangles, an edge, a corner and a ridge.
@@ -64,33 +52,6 @@ const char* const good_mesh =
     "1\n"
     "1\n"
     "End\n";
-
-std::string with_line(const std::string& text, int line, const std::string& replacement)
-{
-  std::istringstream in(text);
-  std::string out, l;
-  for(int n = 1; std::getline(in, l); ++n) out += (n == line ? replacement : l) + "\n";
-  return out;
-}
-
-std::string truncate_after_line(const std::string& text, int line)
-{
-  std::istringstream in(text);
-  std::string out, l;
-  for(int n = 1; n <= line && std::getline(in, l); ++n) out += l + "\n";
-  return out;
-}
-
-// Runs the tool; returns the exit status and fills `output` with stdout+stderr.
-int run_bodt(const std::string& args, std::string& output)
-{
-  const fs::path log = tmp_dir() / "bodt_output.txt";
-  const std::string cmd = std::string(BODT_BINARY) + " " + args + " > " + log.string() + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(log);
-  output.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
 
 struct Bad_input
 {

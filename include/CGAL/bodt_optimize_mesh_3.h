@@ -42,7 +42,7 @@ CGAL_PRAGMA_DIAG_POP
 ///  - `quality_guard` (default true: a move that would lower the smallest or raise the
 ///    largest dihedral angle of its star is shortened, then refused);
 ///  - `feature_edge_ratio`, `feature_corner_ratio`: tensor voting thresholds (see
-///    `BODT_3::Tensor_voting_thresholds`), used where the mesh carries no feature information;
+///    `BODT_3::Tensor_voting_options`), used where the mesh carries no feature information;
 ///  - `progress_visitor`: an object with `after_classification(const BODT_3::Smoothing_result&)`
 ///    and `after_iteration(const BODT_3::Iteration_stats&)`, copied.
 /// Returns `MAX_ITERATION_NUMBER_REACHED`, `TIME_LIMIT_REACHED`, `CONVERGENCE_REACHED`, or
@@ -61,8 +61,8 @@ BOOST_PARAMETER_FUNCTION(
     (moving_vertices_, *, BODT_3::Moving_vertices::ALL)
     (preserve_features_, *, true)
     (quality_guard_, *, true)
-    (feature_edge_ratio_, *, BODT_3::Tensor_voting_thresholds().edge_ratio)
-    (feature_corner_ratio_, *, BODT_3::Tensor_voting_thresholds().corner_ratio)
+    (feature_edge_ratio_, *, BODT_3::Tensor_voting_options().edge_ratio)
+    (feature_corner_ratio_, *, BODT_3::Tensor_voting_options().corner_ratio)
     (progress_visitor_, *, BODT_3::Null_smoothing_visitor())))
 {
   BODT_3::Smoothing_options options;

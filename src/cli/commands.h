@@ -34,6 +34,8 @@ private:
 int quality(const std::vector<std::string>& args);
 int convert(const std::vector<std::string>& args);
 int smooth(const std::vector<std::string>& args);
+/// `program` is how the command was invoked, for the header of the results.
+int compare(const std::vector<std::string>& args, const std::string& program = "bodt compare");
 
 } // namespace bodt_cli
 

@@ -24,8 +24,12 @@ namespace BODT_3 {
 /// Quality (when `quality_guard` is on): the smallest dihedral angle over the mesh
 /// cells of the star does not decrease and the largest does not increase. Since a
 /// move only changes the cells of its star, the mesh's extreme angles can then
-/// never get worse. Angles are compared through their cosines, which is exact in
-/// ordering and avoids inverse trigonometry on the hot path.
+/// never get worse. With a and b the unit outward normals of the two faces at an
+/// edge, the dihedral angle theta there has |a + b|^2 = 2 - 2 cos(theta), which
+/// grows with theta, and |a - b|^2 = 2 + 2 cos(theta), which shrinks: comparing
+/// these instead of angles avoids inverse trigonometry on the hot path, and unlike
+/// cosines they keep full relative precision near 0 and 180 degrees, where the
+/// worst tetrahedra are.
 ///
 /// A refused move is retried at 1/2, 1/4 and 1/8 of its length before giving up.
 template <class K>
@@ -49,12 +53,12 @@ public:
   Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard) : mesh_(mesh), quality_guard_(quality_guard)
   {
     if(!quality_guard_) return;
-    max_cos_.resize(mesh.cells.size());
-    min_cos_.resize(mesh.cells.size());
+    small_.resize(mesh.cells.size());
+    large_.resize(mesh.cells.size());
     for(std::size_t c = 0; c < mesh.cells.size(); ++c)
     {
       const auto& q = mesh.cells[c];
-      cell_cosines(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]], max_cos_[c], min_cos_[c]);
+      cell_measures(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]], small_[c], large_[c]);
     }
   }
 
@@ -110,22 +114,26 @@ public:
     last_refusal_ = Refusal::worsens_quality;
     if(!quality_guard_) return true;
 
-    double old_max = -2, old_min = 2, new_max = -2, new_min = 2;
+    double old_small = 5, old_large = 5;
+    for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
+    {
+      const int c = m.incidences[k].cell;
+      if(!m.in_mesh[c]) continue;
+      old_small = std::min(old_small, small_[c]);
+      old_large = std::min(old_large, large_[c]);
+    }
     scratch_.clear();
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {
       const int c = m.incidences[k].cell;
       if(!m.in_mesh[c]) continue;
-      old_max = std::max(old_max, max_cos_[c]);
-      old_min = std::min(old_min, min_cos_[c]);
       const auto& f = m.incidences[k].face;
-      double hi, lo;
-      cell_cosines(p, m.points[f[0]], m.points[f[1]], m.points[f[2]], hi, lo);
-      new_max = std::max(new_max, hi);
-      new_min = std::min(new_min, lo);
-      scratch_.push_back({hi, lo});
+      double small, large;
+      cell_measures(p, m.points[f[0]], m.points[f[1]], m.points[f[2]], small, large);
+      if(small < old_small || large < old_large) return false;
+      scratch_.push_back({small, large});
     }
-    return new_max <= old_max && new_min >= old_min;
+    return true;
   }
 
   /// Moves `v` to `p`, which `accepts(v, p)` has just approved.
@@ -138,42 +146,40 @@ public:
     {
       const int c = mesh_.incidences[k].cell;
       if(!mesh_.in_mesh[c]) continue;
-      max_cos_[c] = scratch_[i].first;
-      min_cos_[c] = scratch_[i].second;
+      small_[c] = scratch_[i].first;
+      large_[c] = scratch_[i].second;
       ++i;
     }
   }
 
-  /// Largest and smallest cosine of the six dihedral angles of a tetrahedron: the
-  /// cosines of its smallest and largest dihedral angles.
-  static void cell_cosines(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double& max_cos,
-                           double& min_cos)
+  /// Over the six dihedral angles of a tetrahedron, the smallest |a + b|^2 (which
+  /// measures its smallest angle) and the smallest |a - b|^2 (its largest angle);
+  /// both are larger for a better tetrahedron.
+  static void cell_measures(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double& small,
+                            double& large)
   {
     const Point* p[4] = {&p0, &p1, &p2, &p3};
     Vector n[4];
-    double len[4];
     for(int k = 0; k < 4; ++k)
     {
       const auto& o = internal::kOpposite[k];
       n[k] = CGAL::cross_product(*p[o[1]] - *p[o[0]], *p[o[2]] - *p[o[0]]);   // outward
-      len[k] = std::sqrt(n[k].squared_length());
+      const double len = std::sqrt(n[k].squared_length());
+      n[k] = len > 0 ? n[k] / len : n[k];
     }
-    max_cos = -1;
-    min_cos = 1;
+    small = large = 4;
     for(int k = 0; k < 4; ++k)
       for(int l = k + 1; l < 4; ++l)
       {
-        const double denom = len[k] * len[l];
-        const double c = denom > 0 ? -(n[k] * n[l]) / denom : 1.0;
-        max_cos = std::max(max_cos, c);
-        min_cos = std::min(min_cos, c);
+        small = std::min(small, (n[k] + n[l]).squared_length());
+        large = std::min(large, (n[k] - n[l]).squared_length());
       }
   }
 
 private:
   Smoothing_mesh<K>& mesh_;
   bool quality_guard_;
-  std::vector<double> max_cos_, min_cos_;
+  std::vector<double> small_, large_;   // per cell, see cell_measures
   std::vector<std::pair<double, double>> scratch_;
   Refusal last_refusal_ = Refusal::worsens_quality;
   Refusal first_refusal_ = Refusal::worsens_quality;

@@ -29,7 +29,7 @@ struct Smoothing_options
   Moving_vertices moving_vertices = Moving_vertices::ALL;
   bool preserve_features = true;           // false: Algorithm 2 for every boundary vertex
   bool quality_guard = true;               // refuse moves that worsen the star's extreme angles
-  Tensor_voting_thresholds tensor_voting;
+  Tensor_voting_options tensor_voting;
 };
 
 /// What one sweep did, as reported to visitors.

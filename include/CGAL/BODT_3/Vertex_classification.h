@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -44,7 +45,7 @@ struct Classification_options
 {
   bool move_boundary = true;        // false: only interior vertices move (the ODT baseline)
   bool preserve_features = true;    // false: every boundary vertex uses Algorithm 2
-  Tensor_voting_thresholds tensor_voting;
+  Tensor_voting_options tensor_voting;
 };
 
 /// The result: a kind per vertex, and for feature vertices whose curve is known,
@@ -78,14 +79,17 @@ inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
   std::unordered_map<int, int> next;
   for(const auto& f : facets)
     if(!next.emplace(f[0], f[1]).second) return false;
-  int v = facets.front()[0];
-  for(std::size_t steps = 0; steps < facets.size(); ++steps)
+  // Following the cycle from one facet must visit every facet before coming back.
+  const int start = facets.front()[0];
+  int v = start;
+  for(std::size_t steps = 1; steps <= facets.size(); ++steps)
   {
     auto it = next.find(v);
     if(it == next.end()) return false;
     v = it->second;
+    if(v == start) return steps == facets.size();
   }
-  return v == facets.front()[0];
+  return false;
 }
 
 } // namespace internal
@@ -98,11 +102,14 @@ inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
 ///    point) the vertex is fixed.
 /// 3. Inside one subdomain, with no boundary facet: interior, unless the hints say
 ///    it lies on a feature.
-/// 4. With feature preservation on, features come from the hints when the input has
-///    any (Mesh_3 dimensions, feature edges, corners, or two or more surface patches,
-///    where an edge whose facets belong to two or more patches is a feature edge);
-///    otherwise from tensor voting (eq. 11). A vertex on exactly two feature edges
-///    lies on a feature curve; on one, or three and more, it is a corner.
+/// 4. With feature preservation on, feature edges are the hints' edges and the
+///    edges where facets of two or more surface patches meet (facets the hints do
+///    not label get the pair of subdomains they separate, so junctions of subdomains
+///    are features). A vertex on exactly two feature edges lies on a feature curve;
+///    on one, or three and more, or two that turn by more than 60 degrees, it is a
+///    corner. When the input has no feature
+///    information of its own (Mesh_3 dimensions, feature edges, corners, two or more
+///    patch labels), the other boundary vertices are classified by tensor voting (eq. 11).
 /// 5. Every other vertex is a surface vertex.
 template <class K>
 Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Feature_hints& hints,
@@ -117,7 +124,7 @@ Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Fea
   // label from the pair of subdomains it separates, so that interfaces count as patches.
   std::unordered_map<std::array<int, 3>, int, internal::Facet_key_hash> patch;
   for(const auto& fp : hints.facet_patches) patch.emplace(internal::sorted(fp.first), fp.second);
-  std::set<int> patch_labels;
+  std::set<int> patch_labels;   // labels the hints gave
   std::unordered_map<std::pair<int, int>, std::set<int>, internal::Edge_hash> edge_patches;
   for(int c = 0; c < static_cast<int>(mesh.cells.size()); ++c)
   {
@@ -132,13 +139,15 @@ Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Fea
       const auto it = patch.find(internal::sorted(f));
       int label;
       if(it != patch.end())
+      {
         label = it->second;
+        patch_labels.insert(label);
+      }
       else
       {
         const int s0 = mesh.subdomain[c], s1 = outside ? 0 : mesh.subdomain[n];
         label = -1 - (std::min(s0, s1) * 4099 + std::max(s0, s1));   // disjoint from file labels >= 0
       }
-      patch_labels.insert(label);
       for(int k = 0; k < 3; ++k) edge_patches[internal::edge_key(f[k], f[(k + 1) % 3])].insert(label);
     }
   }
@@ -149,9 +158,10 @@ Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Fea
                                 patch_labels.size() >= 2;
   out.used_tensor_voting = opt.preserve_features && opt.move_boundary && !has_feature_info;
 
-  // Feature edges and the feature degree of each vertex.
+  // Feature edges and the feature degree of each vertex. Junctions of subdomains
+  // count even when tensor voting finds the other features.
   std::unordered_set<std::pair<int, int>, internal::Edge_hash> feature_edges;
-  if(opt.preserve_features && has_feature_info)
+  if(opt.preserve_features)
   {
     for(const auto& e : hints.feature_edges)
       if(e[0] != e[1]) feature_edges.insert(internal::edge_key(e[0], e[1]));
@@ -206,7 +216,29 @@ Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Fea
     if(opt.preserve_features)
     {
       const std::size_t degree = feature_nbrs[v].size();
-      if(is_corner[v] || dim == 0 || degree == 1 || degree >= 3)
+      const bool voting = out.used_tensor_voting && !interior && mesh.boundary_begin[v + 1] > mesh.boundary_begin[v];
+      Tensor_vote<K> vote{Voted_kind::surface, typename K::Vector_3(0, 0, 0)};
+      if(voting)
+      {
+        mesh.gather_star(v, star);
+        vote = tensor_vote(star, opt.tensor_voting);
+      }
+      // Two feature edges make a curve point only if the curve goes on: a turn of
+      // more than 60 degrees (or a crossing with a voted edge) is a corner.
+      bool curve_point = false;
+      if(degree == 2)
+      {
+        const auto u = mesh.points[feature_nbrs[v][0]] - mesh.points[v];
+        const auto w = mesh.points[feature_nbrs[v][1]] - mesh.points[v];
+        curve_point = u * w < -0.5 * std::sqrt(u.squared_length() * w.squared_length());
+        if(curve_point && vote.kind == Voted_kind::feature)
+        {
+          const auto chord = w - u;
+          curve_point = std::abs(chord * vote.direction) >=
+                        0.9 * std::sqrt(chord.squared_length() * vote.direction.squared_length());
+        }
+      }
+      if(is_corner[v] || dim == 0 || vote.kind == Voted_kind::corner || (degree > 0 && !curve_point))
         kind = Vertex_kind::fixed;
       else if(degree == 2)
       {
@@ -215,13 +247,8 @@ Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Fea
       }
       else if(dim == 1)
         kind = Vertex_kind::fixed;                               // a curve vertex whose curve is unknown
-      else if(out.used_tensor_voting && !interior && mesh.boundary_begin[v + 1] > mesh.boundary_begin[v])
-      {
-        mesh.gather_star(v, star);
-        const Voted_kind voted = tensor_vote(star, opt.tensor_voting).kind;
-        kind = voted == Voted_kind::corner ? Vertex_kind::fixed
-               : voted == Voted_kind::feature ? Vertex_kind::feature : Vertex_kind::surface;
-      }
+      else if(vote.kind == Voted_kind::feature)
+        kind = Vertex_kind::feature;
     }
     out.kind[v] = kind;
   }

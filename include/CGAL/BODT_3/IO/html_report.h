@@ -112,6 +112,7 @@ inline std::string html_report(const std::string& title, const Quality_report& b
        ".ylabel { writing-mode: vertical-rl; transform: rotate(180deg); font-size: 12px; }\n"
        "svg { display: block; max-width: 100%; height: auto; }\n"
        "figcaption { font-size: 14px; max-width: 580px; margin: 4px 0 0 18px; }\n"
+       "p.note { color: #555; font-size: 14px; margin: 16px 0; }\n"
        "</style>\n</head>\n<body>\n";
   h += "<h1>" + html_escape(title) + "</h1>\n<p class=\"what\">B-ODT smoothing report (bodt smooth)</p>\n";
 
@@ -145,7 +146,7 @@ inline std::string html_report(const std::string& title, const Quality_report& b
                                internal::report_caption("Before smoothing", before));
   h += internal::report_figure("After smoothing", "after", report_after_colour, after,
                                internal::report_caption("After smoothing", after));
-  h += "</div>\n<p class=\"what\">Both histograms count the same angles; each has its own vertical scale.</p>\n"
+  h += "</div>\n<p class=\"note\">Both histograms count the same angles; each has its own vertical scale.</p>\n"
        "</body>\n</html>\n";
   return h;
 }

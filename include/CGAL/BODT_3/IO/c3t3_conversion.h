@@ -1,0 +1,470 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_IO_C3T3_CONVERSION_H
+#define CGAL_BODT_3_IO_C3T3_CONVERSION_H
+
+#include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/IO/Mesh_io_error.h>
+#include <CGAL/BODT_3/IO/check_tet_mesh.h>
+#include <CGAL/BODT_3/IO/mesh_io.h>
+
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Triangulation_utils_3.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <iostream>
+#include <map>
+#include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+namespace internal_c3t3 {
+
+template <class T> struct Is_pair : std::false_type {};
+template <class A, class B> struct Is_pair<std::pair<A, B>> : std::true_type {};
+
+inline std::uint64_t edge_key(int a, int b)
+{
+  if(b < a) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+// The face of `t` opposite its vertex `i`, in the order CGAL gives it
+// (counterclockwise seen from vertex `i`).
+inline std::array<int, 3> oriented_face(const std::array<int, 4>& t, int i)
+{
+  using U = Triangulation_utils_3;
+  return {t[U::vertex_triple_index(i, 0)], t[U::vertex_triple_index(i, 1)], t[U::vertex_triple_index(i, 2)]};
+}
+
+inline std::array<int, 3> sorted(std::array<int, 3> f)
+{
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+// Two oriented triangles on the same vertices have the same orientation iff
+// their rotations starting at the smallest vertex are equal.
+inline std::array<int, 3> smallest_first(std::array<int, 3> f)
+{
+  std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  return f;
+}
+
+inline std::string face_to_string(const std::array<int, 3>& f)
+{
+  return std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " + std::to_string(f[2] + 1);
+}
+
+// Mesh_3 vertices keep the index of the input face they lie on; other vertex
+// types, or index types that cannot hold `x`, are left alone.
+template <class Vertex_handle, class T>
+void set_vertex_index(const Vertex_handle& v, const T& x)
+{
+  using Index = typename std::decay_t<decltype(*v)>::Index;
+  if constexpr(std::is_constructible<Index, const T&>::value)
+    v->set_index(Index(x));
+}
+
+// File labels for C3T3 indices: integral indices are written as they are; other
+// types (Mesh_3's std::pair surface patch indices) are numbered 1, 2, ... in the
+// order they are first met.
+template <class T>
+class Label_numbering
+{
+public:
+  int operator()(const T& x)
+  {
+    if constexpr(std::is_integral<T>::value)
+      return static_cast<int>(x);
+    else
+      return ids_.emplace(x, static_cast<int>(ids_.size()) + 1).first->second;
+  }
+
+private:
+  std::map<T, int> ids_;
+};
+
+} // namespace internal_c3t3
+
+/// Builds `c3t3` (a `Mesh_complex_3_in_triangulation_3`) from `mesh`, replacing its
+/// content. The triangulation has the mesh's vertices, in the same order, and its
+/// tetrahedra as finite cells (same vertex order); each boundary face of the
+/// tetrahedra gets an infinite cell, as `CGAL::IO::read_MEDIT` does. Vertices that
+/// no tetrahedron uses cannot be in a triangulation and are left out.
+///
+/// The complex:
+///  - cells: the tetrahedra with a label other than 0, with their label as subdomain
+///    index (all tetrahedra, in subdomain 1, when every label is 0);
+///  - facets: the faces between a cell of the complex and one of another subdomain
+///    or outside the complex. Their surface patch index is, when
+///    `Surface_patch_index` is a `std::pair` (Mesh_3's labeled and implicit
+///    domains), the ordered pair of subdomain indices (0 outside), as
+///    `Labeled_mesh_domain_3` makes it, so file triangle labels are not kept; when it
+///    is constructible from `int`, the label of the face in `mesh.triangles` if it is
+///    listed with a label other than 0, else a new index per pair of subdomains,
+///    above every triangle label. Triangles that are not such faces are ignored;
+///  - curve edges: `mesh.edges`, with the edge label as `Curve_index` (labels 0,
+///    which the complex reads as "not an edge", get one index above all labels);
+///  - corners: `mesh.corners` then `mesh.required_vertices`, numbered 1, 2, ...
+/// Each vertex gets the dimension of the lowest face it lies on (0 corner, 1 curve
+/// edge, 2 complex facet, 3 otherwise) and, where the vertex `Index` type can hold
+/// it, that face's index (for dimension 3, the subdomain of a complex cell around it).
+///
+/// When the boundary of the tetrahedra has several components or a handle, the
+/// infinite vertex's star is not a ball: every adjacency is valid, but
+/// `tds().is_valid()` reports the Euler relation unsatisfied, as for
+/// `CGAL::IO::read_MEDIT`'s output.
+///
+/// Throws `Mesh_io_error` (naming `file`, line 0) when the tetrahedra cannot form a
+/// CGAL triangulation: a boundary edge with more than two boundary faces, a vertex
+/// whose tetrahedra only touch there, a face of three tetrahedra, tetrahedra of
+/// inconsistent or negative orientation, bad indices, or an `Edges` entry that is
+/// no edge of the tetrahedra. `c3t3` is unchanged then.
+template <class C3T3>
+void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file = std::string())
+{
+  using namespace internal_c3t3;
+  using Tr = typename C3T3::Triangulation;
+  using Vertex_handle = typename Tr::Vertex_handle;
+  using Cell_handle = typename Tr::Cell_handle;
+  using Subdomain_index = typename C3T3::Subdomain_index;
+  using Surface_patch_index = typename C3T3::Surface_patch_index;
+  using Curve_index = typename C3T3::Curve_index;
+  using Corner_index = typename C3T3::Corner_index;
+  using Bare_point = std::decay_t<decltype(std::declval<typename Tr::Geom_traits>().construct_point_3_object()(
+      std::declval<typename Tr::Point>()))>;
+  static_assert(std::is_constructible<Subdomain_index, int>::value, "Subdomain_index must be constructible from int");
+  static_assert(Is_pair<Surface_patch_index>::value || std::is_constructible<Surface_patch_index, int>::value,
+                "Surface_patch_index must be a std::pair of subdomain indices or constructible from int");
+  static_assert(std::is_constructible<Curve_index, int>::value, "Curve_index must be constructible from int");
+  static_assert(std::is_constructible<Corner_index, int>::value, "Corner_index must be constructible from int");
+
+  auto fail = [&](const std::string& message) { throw Mesh_io_error(file, 0, message); };
+  const int n = static_cast<int>(mesh.points.size());
+  const std::size_t nt = mesh.tets.size();
+  if(nt == 0) fail("the mesh has no tetrahedra");
+  if(mesh.tet_labels.size() != nt || mesh.triangle_labels.size() != mesh.triangles.size() ||
+     mesh.edge_labels.size() != mesh.edges.size())
+    fail("tetrahedra, triangles and edges need one label each");
+  std::vector<char> used(n, 0);
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    const auto& q = mesh.tets[t];
+    for(int k = 0; k < 4; ++k)
+    {
+      if(q[k] < 0 || q[k] >= n)
+        fail("tetrahedron " + std::to_string(t + 1) + " refers to vertex " + std::to_string(q[k] + 1) +
+             ", but there are " + std::to_string(n) + " vertices");
+      for(int j = 0; j < k; ++j)
+        if(q[j] == q[k]) fail("tetrahedron " + std::to_string(t + 1) + " uses a vertex twice");
+      used[q[k]] = 1;
+    }
+    // Flat tetrahedra are kept, as the readers keep them; inverted ones would turn
+    // the triangulation inside out.
+    if(CGAL::orientation(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]) ==
+       CGAL::NEGATIVE)
+      fail("tetrahedron " + std::to_string(t + 1) +
+           " is negatively oriented; a triangulation needs positively oriented cells");
+  }
+
+  C3T3 result;
+  Tr& tr = result.triangulation();
+  auto& tds = tr.tds();
+  tds.clear();   // not tr.clear(), which would create a new infinite vertex
+  tds.set_dimension(3);
+  const Vertex_handle inf = tds.create_vertex();
+  tr.set_infinite_vertex(inf);
+  std::vector<Vertex_handle> vh(n);
+  for(int i = 0; i < n; ++i)
+  {
+    if(!used[i]) continue;
+    const auto& p = mesh.points[i];
+    vh[i] = tds.create_vertex();
+    vh[i]->set_point(typename Tr::Point(Bare_point(p.x(), p.y(), p.z())));
+  }
+
+  // Finite cells, glued along the faces they share.
+  struct Face_side
+  {
+    Cell_handle cell;
+    int index;
+    std::size_t tet;
+    int count;
+  };
+  std::unordered_map<std::array<int, 3>, Face_side, internal::Sorted_triple_hash> faces;
+  faces.reserve(2 * nt + 16);
+  std::vector<Cell_handle> cells(nt);
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    const auto& q = mesh.tets[t];
+    const Cell_handle c = tds.create_cell(vh[q[0]], vh[q[1]], vh[q[2]], vh[q[3]]);
+    cells[t] = c;
+    for(int k = 0; k < 4; ++k)
+      if(vh[q[k]]->cell() == Cell_handle()) vh[q[k]]->set_cell(c);
+    for(int i = 0; i < 4; ++i)
+    {
+      const std::array<int, 3> f = oriented_face(q, i);
+      auto ins = faces.emplace(sorted(f), Face_side{c, i, t, 1});
+      if(ins.second) continue;
+      Face_side& other = ins.first->second;
+      if(++other.count > 2)
+        fail("face (" + face_to_string(f) + ") belongs to three or more tetrahedra");
+      if(smallest_first(f) == smallest_first(oriented_face(mesh.tets[other.tet], other.index)))
+        fail("tetrahedra " + std::to_string(other.tet + 1) + " and " + std::to_string(t + 1) +
+             " lie on the same side of their common face (" + face_to_string(f) + ")");
+      tds.set_adjacency(c, i, other.cell, other.index);
+    }
+  }
+
+  // An infinite cell on each boundary face: the finite cell's vertices with the
+  // infinite vertex in place of the far one and two others swapped, so that both
+  // cells induce opposite orientations on the face. Infinite cells are then glued
+  // along boundary edges, which must have exactly two boundary faces.
+  std::vector<std::size_t> star_size(n, 0);
+  std::unordered_map<std::uint64_t, std::vector<std::pair<Cell_handle, int>>> hull_edges;
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int i = 0; i < 4; ++i)
+    {
+      const Cell_handle c = cells[t];
+      if(c->neighbor(i) != Cell_handle()) continue;
+      std::array<Vertex_handle, 4> v = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
+      std::array<int, 4> id = mesh.tets[t];
+      v[i] = inf;
+      id[i] = -1;
+      std::swap(v[(i + 1) & 3], v[(i + 2) & 3]);
+      std::swap(id[(i + 1) & 3], id[(i + 2) & 3]);
+      const Cell_handle h = tds.create_cell(v[0], v[1], v[2], v[3]);
+      if(inf->cell() == Cell_handle()) inf->set_cell(h);
+      tds.set_adjacency(h, i, c, i);
+      for(int k = 0; k < 4; ++k)
+      {
+        if(k == i) continue;
+        ++star_size[id[k]];
+        // The face opposite `k` holds the infinite vertex and the boundary edge `e`.
+        int e[2], m = 0;
+        for(int j = 0; j < 4; ++j)
+          if(j != k && j != i) e[m++] = id[j];
+        hull_edges[edge_key(e[0], e[1])].emplace_back(h, k);
+      }
+    }
+  for(const auto& he : hull_edges)
+  {
+    if(he.second.size() == 2)
+    {
+      tds.set_adjacency(he.second[0].first, he.second[0].second, he.second[1].first, he.second[1].second);
+      continue;
+    }
+    const int a = static_cast<int>(he.first >> 32), b = static_cast<int>(he.first & 0xffffffffu);
+    fail("the boundary is not manifold at edge (" + std::to_string(a + 1) + " " + std::to_string(b + 1) +
+         "): " + std::to_string(he.second.size()) +
+         " boundary triangles meet there, and a triangulation needs two to close the outside");
+  }
+
+  // Triangulations reach the cells around a vertex through the faces around it:
+  // tetrahedra that only touch at a vertex would be lost.
+  for(const auto& q : mesh.tets)
+    for(int v : q) ++star_size[v];
+  std::vector<Cell_handle> star;
+  for(int i = 0; i < n; ++i)
+  {
+    if(!used[i]) continue;
+    star.clear();
+    tds.incident_cells(vh[i], std::back_inserter(star));
+    if(star.size() != star_size[i])
+      fail("the mesh is not manifold at vertex " + std::to_string(i + 1) + ": its " +
+           std::to_string(star_size[i]) + " cells (with the outside) form separate groups that only touch "
+           "there, and a triangulation needs them connected through faces");
+  }
+
+  // The complex.
+  for(int i = 0; i < n; ++i)
+    if(used[i]) result.set_dimension(vh[i], 3);
+  const bool all_zero = mesh.all_labels_zero();
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    if(!mesh.in_mesh(t, all_zero)) continue;
+    const Subdomain_index s(all_zero ? 1 : mesh.tet_labels[t]);
+    result.add_to_complex(cells[t], s);
+    for(int k = 0; k < 4; ++k) set_vertex_index(cells[t]->vertex(k), s);
+  }
+
+  std::unordered_map<std::array<int, 3>, int, internal::Sorted_triple_hash> listed;
+  int next_patch = 1;
+  if constexpr(!Is_pair<Surface_patch_index>::value)
+    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    {
+      listed.emplace(sorted(mesh.triangles[f]), mesh.triangle_labels[f]);
+      next_patch = (std::max)(next_patch, mesh.triangle_labels[f] + 1);
+    }
+  std::map<std::pair<Subdomain_index, Subdomain_index>, Surface_patch_index> derived;
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int i = 0; i < 4; ++i)
+    {
+      const Cell_handle c = cells[t];
+      const Subdomain_index s0 = result.subdomain_index(c), s1 = result.subdomain_index(c->neighbor(i));
+      if(s0 == s1 || result.is_in_complex(c, i)) continue;
+      const std::pair<Subdomain_index, Subdomain_index> sides = (std::minmax)(s0, s1);
+      Surface_patch_index patch;
+      if constexpr(Is_pair<Surface_patch_index>::value)
+        patch = Surface_patch_index(sides.first, sides.second);
+      else
+      {
+        const auto it = listed.find(sorted(oriented_face(mesh.tets[t], i)));
+        if(it != listed.end() && !(Surface_patch_index(it->second) == Surface_patch_index()))
+          patch = Surface_patch_index(it->second);
+        else
+        {
+          auto d = derived.emplace(sides, Surface_patch_index(next_patch));
+          if(d.second) ++next_patch;
+          patch = d.first->second;
+        }
+      }
+      result.add_to_complex(c, i, patch);
+      for(int k = 0; k < 4; ++k)
+        if(k != i)
+        {
+          result.set_dimension(c->vertex(k), 2);
+          set_vertex_index(c->vertex(k), patch);
+        }
+    }
+
+  int unlabelled_curve = 1;
+  for(int l : mesh.edge_labels) unlabelled_curve = (std::max)(unlabelled_curve, l + 1);
+  for(std::size_t e = 0; e < mesh.edges.size(); ++e)
+  {
+    const int a = mesh.edges[e][0], b = mesh.edges[e][1];
+    Cell_handle c;
+    int i, j;
+    if(a < 0 || b < 0 || a >= n || b >= n || a == b || !used[a] || !used[b] ||
+       !tds.is_edge(vh[a], vh[b], c, i, j))
+      fail("Edges entry " + std::to_string(e + 1) + " (" + std::to_string(a + 1) + " " + std::to_string(b + 1) +
+           ") is not an edge of the tetrahedra");
+    if(result.is_in_complex(vh[a], vh[b])) continue;
+    Curve_index curve(mesh.edge_labels[e]);
+    if(curve == Curve_index()) curve = Curve_index(unlabelled_curve);
+    result.add_to_complex(vh[a], vh[b], curve);
+    for(int v : {a, b})
+    {
+      result.set_dimension(vh[v], 1);
+      set_vertex_index(vh[v], curve);
+    }
+  }
+
+  int next_corner = 1;
+  for(const std::vector<int>* list : {&mesh.corners, &mesh.required_vertices})
+    for(int v : *list)
+    {
+      if(v < 0 || v >= n) fail("corner " + std::to_string(v + 1) + " is not a vertex");
+      if(!used[v] || result.is_in_complex(vh[v])) continue;
+      const Corner_index corner(next_corner++);
+      result.add_to_complex(vh[v], corner);
+      set_vertex_index(vh[v], corner);
+    }
+
+  c3t3.swap(result);
+}
+
+/// The cells of `c3t3`'s complex as a `Tet_mesh`:
+///  - points: the vertices of those cells, in the triangulation's vertex order
+///    (vertices of no cell of the complex are left out, so that every written vertex
+///    belongs to a tetrahedron), with reference 0;
+///  - tets: the cells of the complex, with their subdomain index as label;
+///  - triangles: the facets of the complex whose vertices are written, oriented
+///    with their normal out of the complex cell on their side (out of the one with
+///    the smaller subdomain index between two subdomains);
+///  - edges: the curve edges, corners: the corners of the complex.
+/// Integral subdomain, surface patch and curve indices are written as they are;
+/// other types (Mesh_3's `std::pair` surface patch indices) are numbered 1, 2, ...
+/// in the order the facets (edges, cells) are visited.
+template <class C3T3>
+Tet_mesh c3t3_to_tet_mesh(const C3T3& c3t3)
+{
+  using namespace internal_c3t3;
+  using Tr = typename C3T3::Triangulation;
+  using Vertex_handle = typename Tr::Vertex_handle;
+  using U = Triangulation_utils_3;
+  const Tr& tr = c3t3.triangulation();
+  auto cp = tr.geom_traits().construct_point_3_object();
+
+  std::unordered_map<Vertex_handle, int> index;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int k = 0; k < 4; ++k) index.emplace(c->vertex(k), -1);
+  Tet_mesh mesh;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+  {
+    const auto it = index.find(v);
+    if(it == index.end()) continue;
+    it->second = static_cast<int>(mesh.points.size());
+    const auto& p = cp(v->point());
+    mesh.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  mesh.vertex_refs.assign(mesh.points.size(), 0);
+
+  Label_numbering<typename C3T3::Subdomain_index> subdomain_label;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    mesh.tets.push_back({index.at(c->vertex(0)), index.at(c->vertex(1)), index.at(c->vertex(2)),
+                         index.at(c->vertex(3))});
+    mesh.tet_labels.push_back(subdomain_label(c3t3.subdomain_index(c)));
+  }
+
+  Label_numbering<typename C3T3::Surface_patch_index> patch_label;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
+    const auto mirror = tr.mirror_facet(*f);
+    const bool flip = !c3t3.is_in_complex(f->first) ||
+                      (c3t3.is_in_complex(mirror.first) &&
+                       c3t3.subdomain_index(mirror.first) < c3t3.subdomain_index(f->first));
+    const auto& side = flip ? mirror : *f;
+    std::array<int, 3> t;
+    bool written = true;
+    for(int k = 0; k < 3; ++k)
+    {
+      // Reversing CGAL's order (counterclockwise seen from inside) points the normal out.
+      const auto it = index.find(side.first->vertex(U::vertex_triple_index(side.second, 2 - k)));
+      written = written && it != index.end();
+      if(written) t[k] = it->second;
+    }
+    if(!written) continue;
+    mesh.triangles.push_back(t);
+    mesh.triangle_labels.push_back(patch_label(c3t3.surface_patch_index(*f)));
+  }
+
+  Label_numbering<typename C3T3::Curve_index> curve_label;
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e)
+  {
+    const auto a = index.find(e->first->vertex(e->second)), b = index.find(e->first->vertex(e->third));
+    if(a == index.end() || b == index.end()) continue;
+    mesh.edges.push_back({a->second, b->second});
+    mesh.edge_labels.push_back(curve_label(c3t3.curve_index(*e)));
+  }
+
+  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
+  {
+    const auto it = index.find(v);
+    if(it != index.end()) mesh.corners.push_back(it->second);
+  }
+  return mesh;
+}
+
+/// Reads a mesh file (see `IO::read_mesh`) into `c3t3` with `tet_mesh_to_c3t3`.
+/// Throws `Mesh_io_error`.
+template <class C3T3>
+void read_mesh_into_c3t3(const std::string& path, C3T3& c3t3, std::ostream& warnings = std::cerr)
+{
+  tet_mesh_to_c3t3(IO::read_mesh(path, warnings), c3t3, path);
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_IO_C3T3_CONVERSION_H

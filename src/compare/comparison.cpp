@@ -1,0 +1,226 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The inputs, the table of methods, our methods, and the measurements.
+#include "compare/compare.h"
+
+#include <CGAL/BODT_3/IO/mesh_io.h>
+#include <CGAL/BODT_3/boundary_distance.h>
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Timer.h>
+#include <CGAL/bodt_optimize_mesh_3.h>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace bodt_compare {
+
+const char* const original_name = "original";
+const char* const odt_interior_name = "ODT interior (ours)";
+const char* const bodt_basic_name = "B-ODT basic";
+const char* const bodt_name = "B-ODT advanced";
+const char* const cgal_odt_name = "CGAL ODT";
+
+namespace {
+
+struct Iteration_counter
+{
+  std::size_t* iterations;
+  void after_classification(const BODT::Smoothing_result&) const {}
+  void after_iteration(const BODT::Iteration_stats& s) const { *iterations = s.iteration; }
+};
+
+// What our functions take: the C3T3 of a Mesh_3 output, the mesh itself otherwise.
+template <class M>
+auto& target(M& m)
+{
+  using T = std::remove_const_t<M>;
+  if constexpr(std::is_same_v<T, bodt_inputs::Generated_mesh> || std::is_same_v<T, Surface_mesh>)
+    return m.c3t3;
+  else
+    return m;
+}
+
+// Our smoother on any kind of input, through the entry point a user of that
+// kind of mesh calls.
+Run smooth_ours(Mesh& mesh, std::size_t iterations, BODT::Moving_vertices moving, bool preserve_features)
+{
+  std::size_t done = 0;
+  const auto code = std::visit(
+      [&](auto& m) {
+        if constexpr(std::is_same_v<std::decay_t<decltype(m)>, BODT::Tet_mesh>)
+        {
+          BODT::Smoothing_options options;
+          options.max_iteration_number = iterations;
+          options.moving_vertices = moving;
+          options.preserve_features = preserve_features;
+          return BODT::smooth(m, options, Iteration_counter{&done}).code;
+        }
+        else
+          return CGAL::bodt_optimize_mesh_3(target(m), CGAL::parameters::max_iteration_number = iterations,
+                                            CGAL::parameters::moving_vertices = moving,
+                                            CGAL::parameters::preserve_features = preserve_features,
+                                            CGAL::parameters::progress_visitor = Iteration_counter{&done});
+      },
+      mesh);
+  return Run{done, outcome_name(code)};
+}
+
+BODT::Quality_report quality(const Mesh& mesh)
+{
+  return std::visit([](const auto& m) { return BODT::mesh_quality(target(m)); }, mesh);
+}
+
+BODT::Boundary_triangles boundary(const Mesh& mesh)
+{
+  return std::visit([](const auto& m) { return BODT::boundary_triangles(target(m)); }, mesh);
+}
+
+std::string describe(bodt_inputs::Shape shape)
+{
+  switch(shape)
+  {
+  case bodt_inputs::Shape::sphere: return "unit ball";
+  case bodt_inputs::Shape::torus: return "ring torus, R = 1, r = 0.4";
+  case bodt_inputs::Shape::genus2: return "smooth solid with two handles";
+  case bodt_inputs::Shape::sharp_part: return "L-shaped block with a chamfer, sharp edges protected";
+  case bodt_inputs::Shape::two_subdomains: return "unit ball cut by z = 0 into two subdomains, junction protected";
+  }
+  return "";
+}
+
+} // namespace
+
+std::string outcome_name(CGAL::Mesh_optimization_return_code code)
+{
+  switch(code)
+  {
+  case CGAL::BOUND_REACHED: return "bound_reached";
+  case CGAL::TIME_LIMIT_REACHED: return "time_limit_reached";
+  case CGAL::CANT_IMPROVE_ANYMORE: return "cant_improve_anymore";
+  case CGAL::CONVERGENCE_REACHED: return "convergence_reached";
+  case CGAL::MAX_ITERATION_NUMBER_REACHED: return "max_iteration_number_reached";
+  case CGAL::ALL_VERTICES_FROZEN: return "all_vertices_frozen";
+  default: return "unknown_error";
+  }
+}
+
+const std::vector<Method>& methods()
+{
+  using BODT::Moving_vertices;
+  static const std::vector<Method> table = {
+      {original_name, Family::reference, Applies_to::every_mesh, "the input, unchanged",
+       [](Mesh&, std::size_t) { return Run{0, "unchanged"}; }},
+      {odt_interior_name, Family::ours, Applies_to::every_mesh,
+       "`bodt_optimize_mesh_3`, `moving_vertices = INTERIOR`: the original ODT (Algorithm 1), boundary fixed",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Moving_vertices::INTERIOR, true); }},
+      {bodt_basic_name, Family::ours, Applies_to::every_mesh,
+       "`bodt_optimize_mesh_3`, `preserve_features = false`: Algorithm 2 on every boundary vertex",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Moving_vertices::ALL, false); }},
+      {bodt_name, Family::ours, Applies_to::every_mesh,
+       "`bodt_optimize_mesh_3` with its defaults: Algorithm 2 on surfaces, Algorithm 3 on feature curves, corners "
+       "fixed",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Moving_vertices::ALL, true); }},
+      {cgal_odt_name, Family::cgal, Applies_to::mesh_3_output,
+       "`odt_optimize_mesh_3`, `convergence = 0`, `freeze_bound = 0` (every vertex moves in every iteration)",
+       cgal_odt},
+      {"CGAL Lloyd", Family::cgal, Applies_to::mesh_3_output,
+       "`lloyd_optimize_mesh_3`, `convergence = 0`, `freeze_bound = 0`", cgal_lloyd},
+      {"CGAL perturb+exude", Family::cgal, Applies_to::mesh_3_output,
+       "`perturb_mesh_3` then `exude_mesh_3` with `make_mesh_3`'s defaults (no time limit, `sliver_bound = 0`: "
+       "run while the smallest angle improves); not iterative",
+       cgal_perturb_exude},
+      {"CGAL remeshing", Family::cgal, Applies_to::mesh_3_output,
+       "`tetrahedral_isotropic_remeshing` on the C3T3 (features and subdomains kept), target edge length = the "
+       "mean edge length of the input mesh; CGAL adds 3 flip-and-smooth iterations to those asked",
+       cgal_remeshing},
+  };
+  return table;
+}
+
+double Measurement::seconds_per_iteration() const
+{
+  return run.iterations ? cpu_seconds / double(run.iterations) : std::numeric_limits<double>::quiet_NaN();
+}
+
+double Measurement::throughput() const
+{
+  return run.iterations && cpu_seconds > 0 ? double(input_tets) * double(run.iterations) / cpu_seconds
+                                           : std::numeric_limits<double>::quiet_NaN();
+}
+
+const Measurement* Input_result::row(const std::string& method) const
+{
+  for(const Measurement& m : rows)
+    if(m.method == method) return m.applied ? &m : nullptr;
+  return nullptr;
+}
+
+std::vector<Input> generated_inputs(bodt_inputs::Size size)
+{
+  std::vector<Input> inputs;
+  for(bodt_inputs::Shape shape : bodt_inputs::all_shapes())
+  {
+    // Mesh_3 draws from CGAL's default random generator: same state, same mesh.
+    CGAL::get_default_random() = CGAL::Random(0);
+    bodt_inputs::Generated_mesh g = bodt_inputs::make_input(shape, size);
+    std::string name = g.name;
+    inputs.push_back(Input{name, "Mesh_3 of an implicit function: " + describe(shape), std::move(g)});
+  }
+  bodt_inputs::Delaunay sphere = bodt_inputs::make_random_sphere(size);
+  const std::string origin = "Delaunay_triangulation_3 of " + std::to_string(sphere.number_of_vertices()) +
+                             " random points on the unit sphere (the paper's Random Sphere, without inner vertices)";
+  inputs.push_back(Input{"random_sphere", origin, std::move(sphere)});
+  return inputs;
+}
+
+Input file_input(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::string file = slash == std::string::npos ? path : path.substr(slash + 1);
+  return Input{file.substr(0, file.rfind('.')), "the file `" + path + "`", BODT::IO::read_mesh(path)};
+}
+
+Input_result compare(const Input& input, const std::vector<Method>& table, const Options& options)
+{
+  Input_result result;
+  result.name = input.name;
+  result.origin = input.origin;
+  result.before = quality(input.mesh);
+  const BODT::Boundary_triangles boundary_before = boundary(input.mesh);
+  for(const Method& method : table)
+  {
+    Measurement row;
+    row.method = method.name;
+    row.input_tets = result.before.num_tets;
+    if(method.applies_to == Applies_to::mesh_3_output && !built_by_mesh_3(input.mesh))
+    {
+      result.rows.push_back(row);
+      continue;
+    }
+    options.log(input.name + ": " + method.name);
+    Mesh mesh = input.mesh;
+    // A randomized method (the perturber) must not depend on what ran before it.
+    CGAL::get_default_random() = CGAL::Random(0);
+    CGAL::Timer cpu;
+    CGAL::Real_timer wall;
+    cpu.start();
+    wall.start();
+    row.run = method.run(mesh, options.iterations);
+    cpu.stop();
+    wall.stop();
+    row.applied = true;
+    row.cpu_seconds = cpu.time();
+    row.wall_seconds = wall.time();
+    row.quality = quality(mesh);
+    row.vertices_added = static_cast<long long>(row.quality.num_vertices) - static_cast<long long>(result.before.num_vertices);
+    row.relative_volume_change = (row.quality.volume - result.before.volume) / result.before.volume;
+    row.relative_hausdorff = BODT::relative_hausdorff_distance(boundary_before, boundary(mesh));
+    result.rows.push_back(row);
+  }
+  return result;
+}
+
+} // namespace bodt_compare
