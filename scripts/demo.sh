@@ -7,5 +7,5 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/scripts/setup.sh" bodt
 out="$here/build/demo"
 mkdir -p "$out"
-"$here/build/bodt" smooth "$here/build/data/sphere.mesh" -o "$out/sphere-bodt.mesh" --report "$out/sphere-bodt.json"
-echo "smoothed mesh: $out/sphere-bodt.mesh; report: $out/sphere-bodt.json"
+"$here/build/bodt" smooth "$here/build/data/sphere.mesh" -o "$out/sphere-bodt.mesh" --report "$out/sphere-bodt.json" --html "$out/sphere-bodt.html"
+echo "smoothed mesh: $out/sphere-bodt.mesh; report: $out/sphere-bodt.json; page: $out/sphere-bodt.html"

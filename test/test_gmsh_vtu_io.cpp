@@ -348,6 +348,8 @@ TEST(Gmsh, RealCubeMsh)
   EXPECT_EQ(g.number_of_tets(), 373u);
   EXPECT_EQ(g.triangles.size(), 300u);
   EXPECT_EQ(g.edges.size(), 60u);
+  // mmg writes a point element, with no tags, for each of the 152 vertices: none is a corner.
+  EXPECT_TRUE(g.corners.empty());
   EXPECT_EQ(g.points, m.points);
   // Same tetrahedra, compared as vertex sets in any order.
   auto sorted = [](const Tet_mesh& x) {
@@ -557,4 +559,13 @@ TEST(Cli, ConvertsThroughGmshAndVtu)
   expect_same_gmsh_content(m, IO::read_medit(back.string(), warnings));
   EXPECT_NE(read_text(vtu).find("NumberOfCells=\"162\""), std::string::npos);
   EXPECT_NE(run(vtu, back), 0);
+}
+
+TEST(Gmsh, UntaggedPointElementsAreNotCorners)
+{
+  const std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n"
+                           "$EndNodes\n$Elements\n3\n1 15 2 0 0 1\n2 15 2 0 7 2\n3 4 2 1 1 1 2 3 4\n$EndElements\n";
+  std::ostringstream warnings;
+  const Tet_mesh m = IO::read_gmsh(write_file("points.msh", text).string(), warnings);
+  EXPECT_EQ(m.corners, (std::vector<int>{1}));   // only node 2, on geometric point 7
 }

@@ -211,7 +211,9 @@ private:
   }
 
   // Reads the nodes of an element of kept type `type` and stores it; `label` is its 2.2 label.
-  void read_element(int type, long long tag, int label, long line)
+  // A point element on no geometric entity (all its 2.2 tags 0) is not a corner: mmg,
+  // for one, writes such an element for every vertex.
+  void read_element(int type, long long tag, int label, long line, bool on_entity = true)
   {
     int v[4] = {0, 0, 0, 0};
     for(int k = 0; k < kept_type_nodes(type); ++k)
@@ -220,7 +222,7 @@ private:
     switch(type)
     {
     case 15:
-      mesh_.corners.push_back(v[0]);
+      if(on_entity) mesh_.corners.push_back(v[0]);
       break;
     case 1:
       mesh_.edges.push_back({v[0], v[1]});
@@ -276,12 +278,14 @@ private:
       }
       const std::size_t ntags = in_.next_count("the number of element tags", 1);
       int label = 0;
+      bool tagged = false;
       for(std::size_t k = 0; k < ntags; ++k)
       {
         const int t = in_.next_int("an element tag");
         if(k == 0) label = t;
+        tagged = tagged || t != 0;
       }
-      read_element(type, tag, label, line);
+      read_element(type, tag, label, line, tagged);
     }
     expect_end("Elements", header);
   }
