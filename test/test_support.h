@@ -5,8 +5,11 @@
 
 #include <CGAL/BODT_3/Tet_mesh.h>
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,10 +22,16 @@ namespace bodt_test {
 
 namespace fs = std::filesystem;
 
-/// The test's scratch folder (BODT_TEST_TMP), or a sub-folder of it, created.
+/// The running test's own scratch folder (under BODT_TEST_TMP), or a sub-folder
+/// of it, created. One folder per test, because ctest runs the tests of one
+/// executable in parallel.
 inline fs::path tmp_dir(const std::string& sub = "")
 {
-  const fs::path d = fs::absolute(fs::path(BODT_TEST_TMP) / sub);
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string test = info ? std::string(info->test_suite_name()) + "." + info->name() : "no_test";
+  std::string folder;
+  for(char ch : test) folder += (std::isalnum(static_cast<unsigned char>(ch)) || ch == '.') ? ch : '_';
+  const fs::path d = fs::absolute(fs::path(BODT_TEST_TMP) / folder / sub);
   fs::create_directories(d);
   return d;
 }
