@@ -195,3 +195,27 @@ TEST(Visitor, ReportsEveryIteration)
   EXPECT_EQ(iterations, 3u);
   EXPECT_GT(classified, 0u);
 }
+
+TEST(ReturnCodes, ConvergenceAndTimeLimitStopTheSweeps)
+{
+  struct Counter
+  {
+    std::size_t* iterations;
+    void after_classification(const BODT::Smoothing_result&) const {}
+    void after_iteration(const BODT::Iteration_stats& s) const { *iterations = s.iteration; }
+  };
+  const Generated_mesh input = make_input(Shape::sphere, Size::small);
+  std::size_t its = 0;
+  C3t3 a = input.c3t3;
+  // Every first-sweep move is far below a billion local sizes: converged after one sweep.
+  EXPECT_EQ(CGAL::bodt_optimize_mesh_3(a, CGAL::parameters::convergence = 1e9,
+                                       CGAL::parameters::progress_visitor = Counter{&its}),
+            CGAL::CONVERGENCE_REACHED);
+  EXPECT_EQ(its, 1u);
+  C3t3 b = input.c3t3;
+  EXPECT_EQ(CGAL::bodt_optimize_mesh_3(b, CGAL::parameters::time_limit = 1e-9,
+                                       CGAL::parameters::max_iteration_number = 0,
+                                       CGAL::parameters::progress_visitor = Counter{&its}),
+            CGAL::TIME_LIMIT_REACHED);
+  EXPECT_EQ(its, 1u);
+}
