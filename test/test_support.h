@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdint>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +90,29 @@ inline int run_bodt(const std::string& args, std::string& output, const fs::path
       std::system((std::string(BODT_BINARY) + " " + args + " > " + shell_quoted(log.string()) + " 2>&1").c_str());
   output = read_text(log);
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+/// What every supported format keeps: points bit for bit, tetrahedra, triangles and
+/// edges with their labels, corners.
+inline void expect_same_mesh_content(const CGAL::BODT_3::Tet_mesh& a, const CGAL::BODT_3::Tet_mesh& b)
+{
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for(std::size_t i = 0; i < a.points.size(); ++i)
+    for(int c = 0; c < 3; ++c)
+    {
+      std::uint64_t x, y;
+      const double ax = a.points[i][c], bx = b.points[i][c];
+      std::memcpy(&x, &ax, sizeof x);
+      std::memcpy(&y, &bx, sizeof y);
+      EXPECT_EQ(x, y) << "vertex " << i << ", coordinate " << c;
+    }
+  EXPECT_EQ(a.tets, b.tets);
+  EXPECT_EQ(a.tet_labels, b.tet_labels);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.triangle_labels, b.triangle_labels);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.edge_labels, b.edge_labels);
+  EXPECT_EQ(a.corners, b.corners);
 }
 
 /// Index of grid point (i, j, k) in `cube_grid(n, ...)`.
