@@ -16,7 +16,8 @@ namespace BODT_3 {
 enum class Moving_vertices
 {
   ALL,        // B-ODT: interior, boundary, interface and feature vertices
-  INTERIOR    // the original ODT: interior vertices only (the paper's baseline)
+  INTERIOR,   // the original ODT: interior vertices only (the paper's baseline)
+  NONE        // no smoothing: topology optimization (and insertion) alone
 };
 
 struct Smoothing_options
@@ -29,7 +30,60 @@ struct Smoothing_options
   Moving_vertices moving_vertices = Moving_vertices::ALL;
   bool preserve_features = true;           // false: Algorithm 2 for every boundary vertex
   bool quality_guard = true;               // refuse moves that worsen the star's extreme angles
+  /// After each sweep, flips (edge removal, multi-face removal, coplanar boundary
+  /// flips) wherever they improve the worst tetrahedron they touch (paper, Fig. 1).
+  bool topology_optimization = true;
+  /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
+  bool vertex_insertion = true;
+  /// At most this many vertices are inserted; a negative value means 5% of the
+  /// input's vertices.
+  long long max_vertex_insertions = -1;
   Tensor_voting_options tensor_voting;
+};
+
+/// What a flip pass did: accepted flips by kind.
+struct Topology_stats
+{
+  std::size_t flips_2_3 = 0;             // a face removed, an edge created (multi-face removal of one face)
+  std::size_t flips_3_2 = 0;             // an edge of three tetrahedra removed
+  std::size_t edge_removals = 0;         // an edge of four or more tetrahedra removed
+  std::size_t multi_face_removals = 0;   // two or more faces removed, an edge created
+  std::size_t boundary_flips = 0;        // of the above, those that flip exactly coplanar boundary or interface facets
+  double seconds = 0;
+
+  std::size_t total() const { return flips_2_3 + flips_3_2 + edge_removals + multi_face_removals; }
+  Topology_stats& operator+=(const Topology_stats& o)
+  {
+    flips_2_3 += o.flips_2_3;
+    flips_3_2 += o.flips_3_2;
+    edge_removals += o.edge_removals;
+    multi_face_removals += o.multi_face_removals;
+    boundary_flips += o.boundary_flips;
+    seconds += o.seconds;
+    return *this;
+  }
+};
+
+/// What an insertion pass did: kept insertions by the kind of tetrahedron split.
+struct Insertion_stats
+{
+  std::size_t spade_splits = 0;     // an edge split at the projection of the opposite vertex
+  std::size_t cap_splits = 0;       // a face split at the projection of the opposite vertex
+  std::size_t sliver_splits = 0;    // both opposite edges split (two vertices)
+  std::size_t undone = 0;           // insertions tried and undone, since they did not improve
+  std::size_t vertices_added = 0;
+  double seconds = 0;
+
+  Insertion_stats& operator+=(const Insertion_stats& o)
+  {
+    spade_splits += o.spade_splits;
+    cap_splits += o.cap_splits;
+    sliver_splits += o.sliver_splits;
+    undone += o.undone;
+    vertices_added += o.vertices_added;
+    seconds += o.seconds;
+    return *this;
+  }
 };
 
 /// What one sweep did, as reported to visitors.
@@ -45,6 +99,9 @@ struct Iteration_stats
   std::size_t refused_breaking_hull = 0;
   std::size_t refused_worsening_quality = 0;
   double max_relative_move = 0;       // largest move / local size
+  Topology_stats topology;            // the flip pass after the sweep
+  Insertion_stats insertion;          // the insertion pass before the sweep
+  double sweep_seconds = 0;           // time of the sweep alone
   double seconds = 0;                 // since the start of the smoothing
 };
 
@@ -60,6 +117,8 @@ struct Smoothing_result
   std::size_t fixed_vertices = 0;
   std::size_t non_manifold_vertices = 0;
   bool used_tensor_voting = false;
+  Topology_stats topology;            // summed over the iterations
+  Insertion_stats insertion;          // summed over the iterations
   double seconds = 0;
 };
 

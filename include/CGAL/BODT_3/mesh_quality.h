@@ -9,7 +9,9 @@
 #include <CGAL/Kernel/global_functions.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <ostream>
@@ -40,6 +42,13 @@ struct Quality_report
   double max_dihedral_deg = 0;
   std::size_t tets_below_small = 0;
   std::size_t tets_above_large = 0;
+  /// The bad tetrahedra (below `small_angle` or above `large_angle`) by where they
+  /// are: no vertex on the boundary or an interface; some but not all of their
+  /// vertices there; all four there ("flat boundary" tets, which moving points
+  /// cannot open and flips or insertion must).
+  std::size_t bad_tets_interior = 0;
+  std::size_t bad_tets_touching_boundary = 0;
+  std::size_t bad_tets_all_vertices_on_boundary = 0;
   double min_radius_ratio = 0;
   double mean_radius_ratio = 0;
   double volume = 0;
@@ -62,8 +71,10 @@ public:
     r_.min_radius_ratio = std::numeric_limits<double>::infinity();
   }
 
+  /// Adds a tetrahedron; `boundary_vertices` is how many of its vertices lie on the
+  /// boundary or an interface.
   template <class Point>
-  void add(const Point& p0, const Point& p1, const Point& p2, const Point& p3, int subdomain)
+  void add(const Point& p0, const Point& p1, const Point& p2, const Point& p3, int subdomain, int boundary_vertices)
   {
     const auto angles = dihedral_angles(p0, p1, p2, p3);
     double lo = angles[0], hi = angles[0];
@@ -79,6 +90,12 @@ public:
     r_.max_dihedral_deg = std::max(r_.max_dihedral_deg, hi);
     if(lo < r_.options.small_angle) ++r_.tets_below_small;
     if(hi > r_.options.large_angle) ++r_.tets_above_large;
+    if(lo < r_.options.small_angle || hi > r_.options.large_angle)
+    {
+      if(boundary_vertices == 0) ++r_.bad_tets_interior;
+      else if(boundary_vertices < 4) ++r_.bad_tets_touching_boundary;
+      else ++r_.bad_tets_all_vertices_on_boundary;
+    }
     const double rr = radius_ratio(p0, p1, p2, p3);
     r_.min_radius_ratio = std::min(r_.min_radius_ratio, rr);
     rr_sum_ += rr;
@@ -114,11 +131,35 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
   Quality_accumulator acc(opt);
   const bool all_zero = mesh.all_labels_zero();
   std::vector<char> used(mesh.points.size(), 0);
+  // A face is on the boundary or an interface unless two mesh tets of one label share it.
+  std::vector<char> on_boundary(mesh.points.size(), 0);
+  {
+    std::map<std::array<int, 3>, std::pair<int, int>> faces;   // sorted face -> (count, label)
+    for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+    {
+      if(!mesh.in_mesh(t, all_zero)) continue;
+      const auto& c = mesh.tets[t];
+      for(int i = 0; i < 4; ++i)
+      {
+        std::array<int, 3> f = {c[(i + 1) % 4], c[(i + 2) % 4], c[(i + 3) % 4]};
+        std::sort(f.begin(), f.end());
+        auto ins = faces.emplace(f, std::make_pair(1, mesh.tet_labels[t]));
+        if(!ins.second)
+        {
+          ins.first->second.first += ins.first->second.second == mesh.tet_labels[t] ? 1 : 2;
+        }
+      }
+    }
+    for(const auto& f : faces)
+      if(f.second.first != 2)
+        for(int v : f.first) on_boundary[v] = 1;
+  }
   for(std::size_t t = 0; t < mesh.tets.size(); ++t)
   {
     if(!mesh.in_mesh(t, all_zero)) continue;
     const auto& c = mesh.tets[t];
-    acc.add(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]], mesh.tet_labels[t]);
+    acc.add(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]], mesh.tet_labels[t],
+            on_boundary[c[0]] + on_boundary[c[1]] + on_boundary[c[2]] + on_boundary[c[3]]);
     for(int v : c) used[v] = 1;
   }
   return acc.result(static_cast<std::size_t>(std::count(used.begin(), used.end(), 1)));
@@ -138,11 +179,17 @@ mesh_quality(const C3T3& c3t3, const Quality_options& opt = Quality_options())
   const auto& tr = c3t3.triangulation();
   auto cp = tr.geom_traits().construct_point_3_object();
   Quality_accumulator acc(opt);
-  std::vector<typename C3T3::Vertex_handle> used;
+  std::vector<typename C3T3::Vertex_handle> used, on_boundary;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    for(int i = 0; i < 4; ++i)
+      if(i != f->second) on_boundary.push_back(f->first->vertex(i));
+  std::sort(on_boundary.begin(), on_boundary.end());
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
   {
+    int nb = 0;
+    for(int i = 0; i < 4; ++i) nb += std::binary_search(on_boundary.begin(), on_boundary.end(), c->vertex(i)) ? 1 : 0;
     acc.add(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
-            cp(c->vertex(3)->point()), static_cast<int>(c3t3.subdomain_index(c)));
+            cp(c->vertex(3)->point()), static_cast<int>(c3t3.subdomain_index(c)), nb);
     for(int i = 0; i < 4; ++i) used.push_back(c->vertex(i));
   }
   std::sort(used.begin(), used.end());
@@ -156,9 +203,16 @@ mesh_quality(const Tr& tr, const Quality_options& opt = Quality_options())
 {
   auto cp = tr.geom_traits().construct_point_3_object();
   Quality_accumulator acc(opt);
+  std::vector<typename Tr::Vertex_handle> hull;   // the boundary is the convex hull
+  tr.adjacent_vertices(tr.infinite_vertex(), std::back_inserter(hull));
+  std::sort(hull.begin(), hull.end());
   for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+  {
+    int nb = 0;
+    for(int i = 0; i < 4; ++i) nb += std::binary_search(hull.begin(), hull.end(), c->vertex(i)) ? 1 : 0;
     acc.add(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
-            cp(c->vertex(3)->point()), 1);
+            cp(c->vertex(3)->point()), 1, nb);
+  }
   return acc.result(tr.number_of_vertices());
 }
 
@@ -176,6 +230,9 @@ inline std::string to_json(const Quality_report& r)
     << ", \"max_dihedral_deg\": " << num(r.max_dihedral_deg)
     << ", \"tets_below_" << num(r.options.small_angle) << "deg\": " << r.tets_below_small
     << ", \"tets_above_" << num(r.options.large_angle) << "deg\": " << r.tets_above_large
+    << ", \"bad_tets\": {\"interior\": " << r.bad_tets_interior << ", \"touching_boundary\": "
+    << r.bad_tets_touching_boundary << ", \"all_vertices_on_boundary\": " << r.bad_tets_all_vertices_on_boundary
+    << "}"
     << ", \"min_radius_ratio\": " << num(r.min_radius_ratio)
     << ", \"mean_radius_ratio\": " << num(r.mean_radius_ratio) << ", \"volume\": " << num(r.volume)
     << ", \"volume_per_subdomain\": {";
