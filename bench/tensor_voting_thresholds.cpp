@@ -13,7 +13,7 @@
 #include "inputs/generated_inputs.h"
 
 #include <CGAL/BODT_3/Vertex_classification.h>
-#include <CGAL/BODT_3/triangulation_adapter.h>
+#include <CGAL/BODT_3/Triangulation_view.h>
 
 #include <cstdio>
 #include <cstring>
@@ -36,16 +36,16 @@ int main(int argc, char** argv)
       std::size_t surface = 0, false_features = 0, curve = 0, missed = 0, corners = 0, missed_corners = 0;
       for(auto& input : inputs)
       {
-        BODT::Triangulation_adapter<Tr> adapter(input.c3t3.triangulation());
-        const BODT::Feature_hints truth = BODT::c3t3_feature_hints(input.c3t3, adapter);
-        adapter.mesh().build_incidences();
+        BODT::C3t3_labels<C3t3> labels(input.c3t3);
+        BODT::Triangulation_view<BODT::C3t3_labels<C3t3>> view(labels);
+        const BODT::Feature_hints truth = BODT::c3t3_feature_hints(input.c3t3, view);
         BODT::Classification_options opt;
         opt.tensor_voting.edge_ratio = edge;
         opt.tensor_voting.corner_ratio = corner;
         opt.tensor_voting.angle_weighted = angle_weighted;
         // No hints, and no interfaces either (interfaces would count as patches):
         // classify the outer boundary of each input by tensor voting alone.
-        auto& mesh = adapter.mesh();
+        auto& mesh = view.mesh();
         for(std::size_t c = 0; c < mesh.cells.size(); ++c)
           if(mesh.in_mesh[c]) mesh.subdomain[c] = 1;
         const auto cls = BODT::classify_vertices(mesh, BODT::Feature_hints(), opt);

@@ -53,9 +53,13 @@ TEST_F(Compare_test, EveryMethodHasAMeasuredRow)
     if(method.family == Family::ours)
     {
       EXPECT_EQ(row.quality.inverted_tets, 0u);
-      EXPECT_LT(std::abs(row.relative_volume_change), 1e-10);
+      // After CGAL's perturb+exude, the volume is what the exuder left.
+      if(method.name != after_perturb_exude_name) EXPECT_LT(std::abs(row.relative_volume_change), 1e-10);
       EXPECT_EQ(row.vertices_added, 0);
-      EXPECT_EQ(row.quality.num_tets, r.before.num_tets);
+      if(method.name == odt_interior_name || method.name == bodt_no_flips_name)
+        EXPECT_EQ(row.quality.num_tets, r.before.num_tets);
+      else
+        EXPECT_GT(row.run.flips.total(), 0u);
       EXPECT_GE(row.quality.min_dihedral_deg, r.before.min_dihedral_deg - 1e-9);
       EXPECT_GT(row.run.iterations, 0u);
       EXPECT_TRUE(std::isfinite(row.throughput()));

@@ -207,11 +207,31 @@ TEST(ReturnCodes, ConvergenceAndTimeLimitStopTheSweeps)
   const Generated_mesh input = make_input(Shape::sphere, Size::small);
   std::size_t its = 0;
   C3t3 a = input.c3t3;
-  // Every first-sweep move is far below a billion local sizes: converged after one sweep.
+  // Every first-sweep move is far below a billion local sizes: converged after one
+  // sweep without flips, and after the first iteration with no flip with them.
   EXPECT_EQ(CGAL::bodt_optimize_mesh_3(a, CGAL::parameters::convergence = 1e9,
+                                       CGAL::parameters::topology_optimization = false,
                                        CGAL::parameters::progress_visitor = Counter{&its}),
             CGAL::CONVERGENCE_REACHED);
   EXPECT_EQ(its, 1u);
+  struct Flip_counter
+  {
+    std::size_t* iterations;
+    std::size_t* last_flips;
+    void after_classification(const BODT::Smoothing_result&) const {}
+    void after_iteration(const BODT::Iteration_stats& s) const
+    {
+      *iterations = s.iteration;
+      *last_flips = s.topology.total();
+    }
+  };
+  std::size_t last_flips = 1;
+  C3t3 a2 = input.c3t3;
+  EXPECT_EQ(CGAL::bodt_optimize_mesh_3(a2, CGAL::parameters::convergence = 1e9,
+                                       CGAL::parameters::progress_visitor = Flip_counter{&its, &last_flips}),
+            CGAL::CONVERGENCE_REACHED);
+  EXPECT_GT(its, 1u);
+  EXPECT_EQ(last_flips, 0u);
   C3t3 b = input.c3t3;
   EXPECT_EQ(CGAL::bodt_optimize_mesh_3(b, CGAL::parameters::time_limit = 1e-9,
                                        CGAL::parameters::max_iteration_number = 0,

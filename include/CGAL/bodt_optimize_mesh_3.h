@@ -21,6 +21,9 @@ BOOST_PARAMETER_NAME((quality_guard, tag) quality_guard_)
 BOOST_PARAMETER_NAME((progress_visitor, tag) progress_visitor_)
 BOOST_PARAMETER_NAME((feature_edge_ratio, tag) feature_edge_ratio_)
 BOOST_PARAMETER_NAME((feature_corner_ratio, tag) feature_corner_ratio_)
+BOOST_PARAMETER_NAME((topology_optimization, tag) topology_optimization_)
+BOOST_PARAMETER_NAME((vertex_insertion, tag) vertex_insertion_)
+BOOST_PARAMETER_NAME((max_vertex_insertions, tag) max_vertex_insertions_)
 CGAL_PRAGMA_DIAG_POP
 } // namespace parameters
 
@@ -63,6 +66,9 @@ BOOST_PARAMETER_FUNCTION(
     (quality_guard_, *, true)
     (feature_edge_ratio_, *, BODT_3::Tensor_voting_options().edge_ratio)
     (feature_corner_ratio_, *, BODT_3::Tensor_voting_options().corner_ratio)
+    (topology_optimization_, *, true)
+    (vertex_insertion_, *, true)
+    (max_vertex_insertions_, *, -1)
     (progress_visitor_, *, BODT_3::Null_smoothing_visitor())))
 {
   BODT_3::Smoothing_options options;
@@ -74,6 +80,9 @@ BOOST_PARAMETER_FUNCTION(
   options.quality_guard = quality_guard_;
   options.tensor_voting.edge_ratio = feature_edge_ratio_;
   options.tensor_voting.corner_ratio = feature_corner_ratio_;
+  options.topology_optimization = topology_optimization_;
+  options.vertex_insertion = vertex_insertion_;
+  options.max_vertex_insertions = max_vertex_insertions_;
   auto visitor = progress_visitor_;
   return BODT_3::smooth(c3t3, options, visitor).code;
 }

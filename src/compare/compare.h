@@ -10,6 +10,7 @@
 
 #include "inputs/generated_inputs.h"
 
+#include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/Mesh_optimization_return_code.h>
@@ -90,6 +91,7 @@ struct Run
 {
   std::size_t iterations = 0;
   std::string outcome;
+  BODT::Topology_stats flips;   // our methods: flips done
 };
 
 /// One row of the comparison: a name (a column of the tables), where it applies,
@@ -107,11 +109,15 @@ struct Method
 const std::vector<Method>& methods();
 
 // Names the reports single out.
-extern const char* const original_name;       // the input, unchanged
-extern const char* const odt_interior_name;   // the paper's baseline
-extern const char* const bodt_basic_name;     // Algorithm 2 everywhere on the boundary
-extern const char* const bodt_name;           // B-ODT advanced (Algorithm 3), the default
-extern const char* const cgal_odt_name;       // the reference for throughput ratios
+extern const char* const original_name;                 // the input, unchanged
+extern const char* const odt_interior_name;             // the paper's baseline: interior ODT, no flips
+extern const char* const bodt_no_flips_name;            // B-ODT smoothing alone
+extern const char* const flips_name;                    // topology optimization alone
+extern const char* const bodt_basic_name;               // Algorithm 2 everywhere on the boundary, with flips
+extern const char* const bodt_name;                     // the default pipeline
+extern const char* const after_perturb_exude_name;      // the default pipeline after make_mesh_3's default
+extern const char* const cgal_odt_name;                 // the reference for throughput ratios
+extern const char* const cgal_odt_perturb_exude_name;   // make_mesh_3 with odt()
 
 // CGAL's methods on Mesh_3 outputs (compiled in mesh_3.cpp with the other Mesh_3 code).
 Run cgal_odt(Mesh& mesh, std::size_t iterations);

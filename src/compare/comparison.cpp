@@ -18,10 +18,14 @@
 namespace bodt_compare {
 
 const char* const original_name = "original";
-const char* const odt_interior_name = "ODT interior (ours)";
-const char* const bodt_basic_name = "B-ODT basic";
-const char* const bodt_name = "B-ODT advanced";
+const char* const odt_interior_name = "ODT (paper's baseline)";
+const char* const bodt_no_flips_name = "B-ODT, no flips";
+const char* const flips_name = "flips alone";
+const char* const bodt_basic_name = "B-ODT basic + flips";
+const char* const bodt_name = "B-ODT + flips";
+const char* const after_perturb_exude_name = "perturb+exude, then B-ODT + flips";
 const char* const cgal_odt_name = "CGAL ODT";
+const char* const cgal_odt_perturb_exude_name = "CGAL ODT + perturb+exude";
 
 namespace {
 
@@ -30,6 +34,14 @@ struct Iteration_counter
   std::size_t* iterations;
   void after_classification(const BODT::Smoothing_result&) const {}
   void after_iteration(const BODT::Iteration_stats& s) const { *iterations = s.iteration; }
+};
+
+// What our pipeline runs: smoothing (which vertices), flips, features.
+struct Ours
+{
+  BODT::Moving_vertices moving = BODT::Moving_vertices::ALL;
+  bool flips = true;
+  bool preserve_features = true;
 };
 
 // What our functions take: the C3T3 of a Mesh_3 output, the mesh itself otherwise.
@@ -43,29 +55,51 @@ auto& target(M& m)
     return m;
 }
 
-// Our smoother on any kind of input, through the entry point a user of that
+// Our pipeline on any kind of input, through the entry point a user of that
 // kind of mesh calls.
-Run smooth_ours(Mesh& mesh, std::size_t iterations, BODT::Moving_vertices moving, bool preserve_features)
+Run smooth_ours(Mesh& mesh, std::size_t iterations, const Ours& how)
 {
   std::size_t done = 0;
+  BODT::Topology_stats flips;
   const auto code = std::visit(
       [&](auto& m) {
         if constexpr(std::is_same_v<std::decay_t<decltype(m)>, BODT::Tet_mesh>)
         {
           BODT::Smoothing_options options;
           options.max_iteration_number = iterations;
-          options.moving_vertices = moving;
-          options.preserve_features = preserve_features;
-          return BODT::smooth(m, options, Iteration_counter{&done}).code;
+          options.moving_vertices = how.moving;
+          options.preserve_features = how.preserve_features;
+          options.topology_optimization = how.flips;
+          options.vertex_insertion = false;
+          const auto r = BODT::smooth(m, options, Iteration_counter{&done});
+          flips = r.topology;
+          return r.code;
         }
         else
+        {
+          struct Counting
+          {
+            std::size_t* iterations;
+            BODT::Topology_stats* flips;
+            void after_classification(const BODT::Smoothing_result&) const {}
+            void after_iteration(const BODT::Iteration_stats& s) const
+            {
+              *iterations = s.iteration;
+              *flips += s.topology;
+            }
+          };
           return CGAL::bodt_optimize_mesh_3(target(m), CGAL::parameters::max_iteration_number = iterations,
-                                            CGAL::parameters::moving_vertices = moving,
-                                            CGAL::parameters::preserve_features = preserve_features,
-                                            CGAL::parameters::progress_visitor = Iteration_counter{&done});
+                                            CGAL::parameters::moving_vertices = how.moving,
+                                            CGAL::parameters::preserve_features = how.preserve_features,
+                                            CGAL::parameters::topology_optimization = how.flips,
+                                            CGAL::parameters::vertex_insertion = false,
+                                            CGAL::parameters::progress_visitor = Counting{&done, &flips});
+        }
       },
       mesh);
-  return Run{done, outcome_name(code)};
+  Run run{done, outcome_name(code)};
+  run.flips = flips;
+  return run;
 }
 
 BODT::Quality_report quality(const Mesh& mesh)
@@ -114,15 +148,31 @@ const std::vector<Method>& methods()
       {original_name, Family::reference, Applies_to::every_mesh, "the input, unchanged",
        [](Mesh&, std::size_t) { return Run{0, "unchanged"}; }},
       {odt_interior_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `moving_vertices = INTERIOR`: the original ODT (Algorithm 1), boundary fixed",
-       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Moving_vertices::INTERIOR, true); }},
+       "`bodt_optimize_mesh_3`, `moving_vertices = INTERIOR`, `topology_optimization = false`: the original ODT "
+       "(Algorithm 1), boundary fixed, no flips",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{Moving_vertices::INTERIOR, false, true}); }},
+      {bodt_no_flips_name, Family::ours, Applies_to::every_mesh,
+       "`bodt_optimize_mesh_3`, `topology_optimization = false`: B-ODT smoothing alone (Algorithm 2 on surfaces, "
+       "Algorithm 3 on feature curves, corners fixed), connectivity kept",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{Moving_vertices::ALL, false, true}); }},
+      {flips_name, Family::ours, Applies_to::every_mesh,
+       "`bodt_optimize_mesh_3`, `moving_vertices = NONE`: topology optimization alone (edge removal, multi-face "
+       "removal, coplanar boundary flips), no vertex moves",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{Moving_vertices::NONE, true, true}); }},
       {bodt_basic_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `preserve_features = false`: Algorithm 2 on every boundary vertex",
-       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Moving_vertices::ALL, false); }},
+       "`bodt_optimize_mesh_3`, `preserve_features = false`: Algorithm 2 on every boundary vertex, with flips",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{Moving_vertices::ALL, true, false}); }},
       {bodt_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3` with its defaults: Algorithm 2 on surfaces, Algorithm 3 on feature curves, corners "
-       "fixed",
-       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Moving_vertices::ALL, true); }},
+       "`bodt_optimize_mesh_3` with its defaults (vertex insertion off until it exists): each iteration a B-ODT "
+       "sweep, then a flip pass",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{}); }},
+      {after_perturb_exude_name, Family::ours, Applies_to::mesh_3_output,
+       "CGAL's `perturb_mesh_3` + `exude_mesh_3` as `make_mesh_3` runs them by default, then "
+       "`bodt_optimize_mesh_3` with its defaults: what a user gets from `make_mesh_3`'s default output",
+       [](Mesh& m, std::size_t n) {
+         cgal_perturb_exude(m, n);
+         return smooth_ours(m, n, Ours{});
+       }},
       {cgal_odt_name, Family::cgal, Applies_to::mesh_3_output,
        "`odt_optimize_mesh_3`, `convergence = 0`, `freeze_bound = 0` (every vertex moves in every iteration)",
        cgal_odt},
@@ -132,6 +182,14 @@ const std::vector<Method>& methods()
        "`perturb_mesh_3` then `exude_mesh_3` with `make_mesh_3`'s defaults (no time limit, `sliver_bound = 0`: "
        "run while the smallest angle improves); not iterative",
        cgal_perturb_exude},
+      {cgal_odt_perturb_exude_name, Family::cgal, Applies_to::mesh_3_output,
+       "`odt_optimize_mesh_3` as above, then `perturb_mesh_3` and `exude_mesh_3`: what `make_mesh_3` with "
+       "`odt()` gives",
+       [](Mesh& m, std::size_t n) {
+         const Run odt = cgal_odt(m, n);
+         const Run pe = cgal_perturb_exude(m, n);
+         return Run{odt.iterations, odt.outcome + "; " + pe.outcome};
+       }},
       {"CGAL remeshing", Family::cgal, Applies_to::mesh_3_output,
        "`tetrahedral_isotropic_remeshing` on the C3T3 (features and subdomains kept), target edge length = the "
        "mean edge length of the input mesh; CGAL adds 3 flip-and-smooth iterations to those asked",

@@ -120,21 +120,21 @@ std::string input_sentence(const Input_result& r, const std::vector<Method>& tab
 {
   const Measurement* ours = r.row(bodt_name);
   if(!ours) return "";
-  std::string s = format("- **%s**: B-ODT advanced takes the dihedral angles from %.2f° / %.2f° to %.2f° / %.2f°",
-                         r.name.c_str(), r.before.min_dihedral_deg, r.before.max_dihedral_deg,
+  std::string s = format("- **%s**: %s takes the dihedral angles from %.2f° / %.2f° to %.2f° / %.2f°",
+                         r.name.c_str(), bodt_name, r.before.min_dihedral_deg, r.before.max_dihedral_deg,
                          ours->quality.min_dihedral_deg, ours->quality.max_dihedral_deg);
   const Measurement* best = best_cgal(r, table);
   if(!best)
   {
     const Measurement* odt = r.row(odt_interior_name);
     if(odt)
-      s += format("; interior-only ODT reaches %.2f° / %.2f° with the boundary fixed", odt->quality.min_dihedral_deg,
-                  odt->quality.max_dihedral_deg);
+      s += format("; interior-only ODT without flips reaches %.2f° / %.2f° with the boundary fixed",
+                  odt->quality.min_dihedral_deg, odt->quality.max_dihedral_deg);
     return s + " (CGAL's optimizers need a Mesh_3 domain and do not apply).\n";
   }
   const double dmin = ours->quality.min_dihedral_deg - best->quality.min_dihedral_deg;
   const double dmax = best->quality.max_dihedral_deg - ours->quality.max_dihedral_deg;
-  s += format("; the best CGAL method by minimum angle, %s, reaches %.2f° / %.2f°. B-ODT is %s on the minimum "
+  s += format("; the best CGAL method by minimum angle, %s, reaches %.2f° / %.2f°. Ours is %s on the minimum "
               "angle by %.2f° and %s on the maximum angle by %.2f°",
               best->method.c_str(), best->quality.min_dihedral_deg, best->quality.max_dihedral_deg,
               dmin >= 0 ? "ahead" : "behind", std::abs(dmin), dmax >= 0 ? "ahead" : "behind", std::abs(dmax));
@@ -148,7 +148,7 @@ std::string input_sentence(const Input_result& r, const std::vector<Method>& tab
   return s + ".\n";
 }
 
-// Every place where a method other than B-ODT advanced does better on one measure.
+// Every place where a method other than the default pipeline does better on one measure.
 std::string losses(const Comparison& c, const std::vector<Method>& table)
 {
   std::vector<std::string> items;
@@ -185,11 +185,14 @@ std::string losses(const Comparison& c, const std::vector<Method>& table)
     }
   }
   if(items.empty())
-    return "No other method beat B-ODT advanced on any input on the minimum or maximum angle, the counts of "
-           "tetrahedra below 10° or above 170°, or (for CGAL's methods) the boundary distance or the throughput.\n";
-  std::string out = "Every place where another method beat B-ODT advanced on one measure (first value: the other "
-                    "method; ours are listed too, since the variants trade quality against feature "
-                    "preservation):\n\n";
+    return format("No other method beat %s on any input on the minimum or maximum angle, the counts of "
+                  "tetrahedra below 10° or above 170°, or (for CGAL's methods) the boundary distance or the "
+                  "throughput.\n",
+                  bodt_name);
+  std::string out = format("Every place where another method beat %s on one measure (first value: the other "
+                           "method; ours are listed too, since the variants trade quality against feature "
+                           "preservation, and the order of the stages matters):\n\n",
+                           bodt_name);
   for(const std::string& i : items) out += i;
   return out;
 }
@@ -197,7 +200,8 @@ std::string losses(const Comparison& c, const std::vector<Method>& table)
 std::string summary(const Comparison& c, const std::vector<Method>& table)
 {
   std::size_t with_cgal = 0, min_wins = 0, max_wins = 0, improved = 0, measured = 0;
-  std::size_t above_odt_min = 0, below_odt_max = 0, closer_than_basic = 0, farther_than_basic = 0;
+  std::size_t above_no_flips_min = 0, below_no_flips_max = 0, closer_than_basic = 0, farther_than_basic = 0;
+  std::size_t after_pe = 0, after_pe_min_wins = 0, after_pe_max_wins = 0, raw_min_vs_odt = 0, raw_max_vs_odt = 0;
   double ratio_lo = INFINITY, ratio_hi = -INFINITY, worst_volume = 0, worst_cgal_volume = 0, worst_cgal_vertices = 0;
   std::map<std::string, std::size_t> best_counts;
   for(const Input_result& r : c.inputs)
@@ -208,16 +212,32 @@ std::string summary(const Comparison& c, const std::vector<Method>& table)
     if(ours->quality.min_dihedral_deg > r.before.min_dihedral_deg &&
        ours->quality.max_dihedral_deg < r.before.max_dihedral_deg)
       ++improved;
-    worst_volume = std::max(worst_volume, std::abs(ours->relative_volume_change));
-    if(const Measurement* odt = r.row(odt_interior_name))
+    for(const Measurement& row : r.rows)
+      if(row.applied && row.method != after_perturb_exude_name)
+        for(const Method* m : family(table, Family::ours))
+          if(m->name == row.method) worst_volume = std::max(worst_volume, std::abs(row.relative_volume_change));
+    if(const Measurement* smooth = r.row(bodt_no_flips_name))
     {
-      if(ours->quality.min_dihedral_deg > odt->quality.min_dihedral_deg) ++above_odt_min;
-      if(ours->quality.max_dihedral_deg < odt->quality.max_dihedral_deg) ++below_odt_max;
+      if(ours->quality.min_dihedral_deg > smooth->quality.min_dihedral_deg) ++above_no_flips_min;
+      if(ours->quality.max_dihedral_deg < smooth->quality.max_dihedral_deg) ++below_no_flips_max;
     }
     if(const Measurement* basic = r.row(bodt_basic_name))
     {
       if(ours->relative_hausdorff < basic->relative_hausdorff) ++closer_than_basic;
       if(ours->relative_hausdorff > basic->relative_hausdorff) ++farther_than_basic;
+    }
+    const Measurement* pe_ours = r.row(after_perturb_exude_name);
+    const Measurement* odt_pe = r.row(cgal_odt_perturb_exude_name);
+    if(pe_ours && odt_pe)
+    {
+      ++after_pe;
+      if(pe_ours->quality.min_dihedral_deg > odt_pe->quality.min_dihedral_deg) ++after_pe_min_wins;
+      if(pe_ours->quality.max_dihedral_deg < odt_pe->quality.max_dihedral_deg) ++after_pe_max_wins;
+    }
+    if(const Measurement* odt = r.row(cgal_odt_name))
+    {
+      if(ours->quality.min_dihedral_deg >= odt->quality.min_dihedral_deg) ++raw_min_vs_odt;
+      if(ours->quality.max_dihedral_deg <= odt->quality.max_dihedral_deg) ++raw_max_vs_odt;
     }
     const Measurement* best = best_cgal(r, table);
     if(!best) continue;
@@ -241,30 +261,36 @@ std::string summary(const Comparison& c, const std::vector<Method>& table)
       ratio_hi = std::max(ratio_hi, ratio);
     }
   }
-  std::string s = format("B-ODT advanced raised the minimum and lowered the maximum dihedral angle on %zu of %zu "
-                         "inputs and changed no volume by more than %.1e (relative). ",
-                         improved, measured, worst_volume);
-  s += format("Against interior-only ODT (the paper's baseline, boundary fixed), its minimum angle is larger on %zu "
-              "and its maximum angle smaller on %zu of the %zu inputs; against B-ODT basic, which moves feature "
-              "vertices like surface vertices, its boundary stays closer to the input on %zu, farther on %zu, and "
-              "as close elsewhere. ",
-              above_odt_min, below_odt_max, measured, closer_than_basic, farther_than_basic);
+  std::string s = format("%s (the default pipeline) raised the minimum and lowered the maximum dihedral angle on "
+                         "%zu of %zu inputs; our methods changed no volume by more than %.1e (relative) and added "
+                         "no vertex. ",
+                         bodt_name, improved, measured, worst_volume);
+  s += format("Against B-ODT smoothing without flips, its minimum angle is larger on %zu and its maximum angle "
+              "smaller on %zu of the %zu inputs; against B-ODT basic, which moves feature vertices like surface "
+              "vertices, its boundary stays closer to the input on %zu, farther on %zu, and as close elsewhere. ",
+              above_no_flips_min, below_no_flips_max, measured, closer_than_basic, farther_than_basic);
   if(with_cgal)
   {
-    s += format("On the %zu inputs where CGAL's optimizers apply, its minimum angle is at least the best CGAL "
+    s += format("On the %zu inputs where CGAL's optimizers apply, its minimum angle is at least CGAL ODT's on %zu "
+                "and its maximum angle at most CGAL ODT's on %zu; its minimum angle is at least the best CGAL "
                 "method's on %zu and its maximum angle is at most every CGAL method's on %zu. The best CGAL method "
                 "by minimum angle was",
-                with_cgal, min_wins, max_wins);
+                with_cgal, raw_min_vs_odt, raw_max_vs_odt, min_wins, max_wins);
     std::size_t k = 0;
     for(const auto& [method, count] : best_counts)
       s += format("%s %s on %zu", k++ == 0 ? "" : (k == best_counts.size() ? " and" : ","), method.c_str(), count);
     s += format("; CGAL's methods changed the volume by up to %.1e (relative) and the number of vertices by up to "
                 "%.1f%%. ",
                 worst_cgal_volume, 100. * worst_cgal_vertices);
+    if(after_pe)
+      s += format("Started from what `make_mesh_3` gives by default (perturb+exude), our pipeline beats CGAL's "
+                  "ODT + perturb+exude (`make_mesh_3` with `odt()`) on the minimum angle on %zu and on the maximum "
+                  "angle on %zu of %zu inputs. ",
+                  after_pe_min_wins, after_pe_max_wins, after_pe);
     if(std::isfinite(ratio_lo))
-      s += format("The throughput of B-ODT advanced (tetrahedra times iterations per CPU second) is %.2f× to "
-                  "%.2f× that of CGAL ODT.",
-                  ratio_lo, ratio_hi);
+      s += format("The throughput of %s (tetrahedra times iterations per CPU second) is %.2f× to %.2f× that of "
+                  "CGAL ODT.",
+                  bodt_name, ratio_lo, ratio_hi);
   }
   return s + "\n";
 }
@@ -292,10 +318,10 @@ std::string paper_section(const Comparison& c)
       "The paper (figure captions) reports the minimum / maximum dihedral angle before and after B-ODT. Its "
       "meshes are not available except the FanDisk surface: our inputs are our own Mesh_3 meshes, so the "
       "numbers stand side by side, not as a reproduction. The paper's pipeline also inserts vertices at "
-      "spade, cap and sliver tetrahedra (Section 2.3), which this package does not do yet; its Random Sphere "
-      "has 642 points on the sphere and 87 inner vertices; ours has no inner vertex and the number of points "
-      "given under Inputs.\n\n"
-      "| paper model | paper before | paper after B-ODT | our input | ours before | ours after B-ODT advanced |\n"
+      "spade, cap and sliver tetrahedra (Section 2.3), which this package does not do yet (ours smooths and "
+      "flips); its Random Sphere has 642 points on the sphere and 87 inner vertices; ours has no inner vertex "
+      "and the number of points given under Inputs.\n\n"
+      "| paper model | paper before | paper after B-ODT | our input | ours before | ours after B-ODT + flips |\n"
       "|---|---|---|---|---|---|\n";
   std::string sentences;
   for(const Paper_model& p : paper_models)
@@ -310,7 +336,7 @@ std::string paper_section(const Comparison& c)
     if(!ours) continue;
     const double gain = ours->quality.min_dihedral_deg - r->before.min_dihedral_deg;
     const double paper_gain = p.after_min - p.before_min;
-    sentences += format("- %s: the paper raises the minimum angle by %.2f° to %.2f°; B-ODT advanced changes ours "
+    sentences += format("- %s: the paper raises the minimum angle by %.2f° to %.2f°; our pipeline changes ours "
                         "by %+.2f° to %.2f°, %s the paper's final value.\n",
                         p.model, paper_gain, p.after_min, gain, ours->quality.min_dihedral_deg,
                         ours->quality.min_dihedral_deg >= p.after_min ? "at or above" : "below");
@@ -406,12 +432,14 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
   for(const Method& m : table)
     md << "| " << m.name << " | " << (m.applies_to == Applies_to::every_mesh ? "every input" : "Mesh_3 outputs")
        << " | " << m.settings << " |\n";
-  md << "\nOur methods keep the connectivity and the volume of every subdomain and move a vertex only if no "
-        "tetrahedron inverts and, by default, the worst angles of its star do not get worse.\n\n";
+  md << "\nOur methods keep the volume of every subdomain and the boundary surface (flips change boundary "
+        "facets only where they are exactly coplanar), add no vertex, never invert a tetrahedron, and change the "
+        "mesh (a move or a flip) only where the worst tetrahedron it touches gets better (by the minimum sine of "
+        "its dihedral angles) and neither extreme angle of the input gets worse.\n\n";
 
   md << "## What the numbers say\n\n" << summary(c, table) << "\n";
   for(const Input_result& r : c.inputs) md << input_sentence(r, table);
-  md << "\n### Where B-ODT advanced loses\n\n" << losses(c, table) << "\n";
+  md << "\n### Where " << bodt_name << " loses\n\n" << losses(c, table) << "\n";
 
   md << "## Table 1. Dihedral angles, min / max (degrees)\n\n"
      << "The largest minimum and the smallest maximum among the smoothing methods are in bold.\n\n"
@@ -432,6 +460,13 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
      << "\n### Table 1b. Tetrahedra with a dihedral angle below 10° / above 170°\n\n"
      << wide_table(c, table, [](const Input_result&, const Measurement& row) {
           return format("%zu / %zu", row.quality.tets_below_small, row.quality.tets_above_large);
+        })
+     << "\n### Table 1c. Those tetrahedra by where they are: no vertex on the boundary / some / all four\n\n"
+     << "A tetrahedron whose four vertices lie on the boundary or an interface cannot be opened by moving points "
+        "along the surface; flips remove many, vertex insertion (not yet) is for the rest.\n\n"
+     << wide_table(c, table, [](const Input_result&, const Measurement& row) {
+          return format("%zu / %zu / %zu", row.quality.bad_tets_interior, row.quality.bad_tets_touching_boundary,
+                        row.quality.bad_tets_all_vertices_on_boundary);
         })
      << "\n## Table 2. Relative Hausdorff distance between the boundary surfaces before and after\n\n"
      << "The Hausdorff distance between the boundary and interface triangles before and after, divided by "
@@ -459,25 +494,33 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
     }
   }
 
-  md << "\n## Vertices added, volume change, outcome\n\n"
-     << "| input | method | vertices added | relative volume change | inverted tetrahedra | outcome |\n"
-     << "|---|---|---|---|---|---|\n";
+  md << "\n## Vertices added, volume change, flips, outcome\n\n"
+     << "Flips of our methods: 2-3 / 3-2 / edge removals (4 cells and more) / multi-face removals (2 faces and "
+        "more), and of those, the flips of exactly coplanar boundary or interface facets.\n\n"
+     << "| input | method | vertices added | relative volume change | inverted tetrahedra | flips | outcome |\n"
+     << "|---|---|---|---|---|---|---|\n";
   for(const Input_result& r : c.inputs)
     for(const Measurement& row : r.rows)
       if(row.applied && row.method != original_name)
+      {
+        const auto& f = row.run.flips;
         md << "| " << r.name << " | " << row.method << " | " << row.vertices_added << " | "
            << format("%.2e", row.relative_volume_change) << " | " << row.quality.inverted_tets << " | "
-           << row.run.outcome << " |\n";
+           << (f.total() ? format("%zu / %zu / %zu / %zu (%zu)", f.flips_2_3, f.flips_3_2, f.edge_removals,
+                                  f.multi_face_removals, f.boundary_flips)
+                         : std::string("0"))
+           << " | " << row.run.outcome << " |\n";
+      }
 
   md << "\n## Dihedral-angle histograms\n\n"
-     << "All six dihedral angles of every tetrahedron, in 5° bins: the input, B-ODT advanced, and the CGAL "
+     << "All six dihedral angles of every tetrahedron, in 5° bins: the input, " << bodt_name << ", and the CGAL "
         "method with the largest minimum angle where CGAL's methods apply.\n\n";
   for(const Input_result& r : c.inputs)
   {
     const Measurement* ours = r.row(bodt_name);
     if(!ours) continue;
     md << "### " << r.name << "\n\n![" << r.name << "](" << svg_dir << "/" << file_stem(r.name) << ".svg)\n\n"
-       << "original " << angles(r.before) << "°, B-ODT advanced " << angles(ours->quality) << "°";
+       << "original " << angles(r.before) << "°, " << bodt_name << " " << angles(ours->quality) << "°";
     if(const Measurement* best = best_cgal(r, table))
       md << ", " << best->method << " " << angles(best->quality) << "°";
     md << ".\n\n";
@@ -519,6 +562,10 @@ std::string json(const Comparison& c, const std::vector<Method>& table)
          << ", \"vertices_added\": " << row.vertices_added
          << ", \"relative_volume_change\": " << json_number(row.relative_volume_change)
          << ", \"relative_hausdorff_distance\": " << json_number(row.relative_hausdorff)
+         << ", \"flips\": {\"2-3\": " << row.run.flips.flips_2_3 << ", \"3-2\": " << row.run.flips.flips_3_2
+         << ", \"edge_removals\": " << row.run.flips.edge_removals
+         << ", \"multi_face_removals\": " << row.run.flips.multi_face_removals
+         << ", \"boundary\": " << row.run.flips.boundary_flips << "}"
          << ",\n       \"quality\": " << BODT::to_json(row.quality) << "}";
       first = false;
     }

@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_MOVE_GUARD_H
 
 #include <CGAL/BODT_3/Smoothing_mesh.h>
+#include <CGAL/BODT_3/tet_quality.h>
 
 #include <CGAL/Kernel/global_functions.h>
 
@@ -21,15 +22,11 @@ namespace BODT_3 {
 /// for a triangulation, every locally convex hull edge next to the vertex stays
 /// convex, so the convex hull remains one.
 ///
-/// Quality (when `quality_guard` is on): the smallest dihedral angle over the mesh
-/// cells of the star does not decrease and the largest does not increase. Since a
-/// move only changes the cells of its star, the mesh's extreme angles can then
-/// never get worse. With a and b the unit outward normals of the two faces at an
-/// edge, the dihedral angle theta there has |a + b|^2 = 2 - 2 cos(theta), which
-/// grows with theta, and |a - b|^2 = 2 + 2 cos(theta), which shrinks: comparing
-/// these instead of angles avoids inverse trigonometry on the hot path, and unlike
-/// cosines they keep full relative precision near 0 and 180 degrees, where the
-/// worst tetrahedra are.
+/// Quality (when `quality_guard` is on): the worst mesh cell of the star, by the
+/// measure of tet_quality.h (minimum dihedral sine), is not worse after the move,
+/// and every mesh cell of the star stays within `bounds` (the input's extreme
+/// dihedral angles). Since a move only changes the cells of its star, the mesh's
+/// worst cell never gets worse, nor does either extreme angle.
 ///
 /// A refused move is retried at 1/2, 1/4 and 1/8 of its length before giving up.
 template <class K>
@@ -50,15 +47,21 @@ public:
     worsens_quality
   };
 
-  Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard) : mesh_(mesh), quality_guard_(quality_guard)
+  Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard, const Dihedral_bounds& bounds)
+    : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds)
+  {
+    refresh();
+  }
+
+  /// Re-reads the cell qualities, after the mesh's cells changed.
+  void refresh()
   {
     if(!quality_guard_) return;
-    small_.resize(mesh.cells.size());
-    large_.resize(mesh.cells.size());
-    for(std::size_t c = 0; c < mesh.cells.size(); ++c)
+    quality_.resize(mesh_.cells.size());
+    for(std::size_t c = 0; c < mesh_.cells.size(); ++c)
     {
-      const auto& q = mesh.cells[c];
-      cell_measures(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]], small_[c], large_[c]);
+      const auto& q = mesh_.cells[c];
+      quality_[c] = min_dihedral_sine(mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]);
     }
   }
 
@@ -85,8 +88,8 @@ public:
   /// Why the full-length move of the last refused vertex was refused.
   Refusal first_refusal() const { return first_refusal_; }
 
-  /// Whether `v` may go to `p` (see the class comment). Leaves its verdict on the
-  /// star's cell qualities in a buffer that `apply` uses.
+  /// Whether `v` may go to `p` (see the class comment). Leaves the star's new
+  /// cell qualities in a buffer that `apply` uses.
   bool accepts(int v, const Point& p)
   {
     const auto& m = mesh_;
@@ -114,13 +117,11 @@ public:
     last_refusal_ = Refusal::worsens_quality;
     if(!quality_guard_) return true;
 
-    double old_small = 5, old_large = 5;
+    double old_worst = 2;
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {
       const int c = m.incidences[k].cell;
-      if(!m.in_mesh[c]) continue;
-      old_small = std::min(old_small, small_[c]);
-      old_large = std::min(old_large, large_[c]);
+      if(m.in_mesh[c]) old_worst = std::min(old_worst, quality_[c]);
     }
     scratch_.clear();
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
@@ -128,10 +129,10 @@ public:
       const int c = m.incidences[k].cell;
       if(!m.in_mesh[c]) continue;
       const auto& f = m.incidences[k].face;
-      double small, large;
-      cell_measures(p, m.points[f[0]], m.points[f[1]], m.points[f[2]], small, large);
-      if(small < old_small || large < old_large) return false;
-      scratch_.push_back({small, large});
+      const Point &a = m.points[f[0]], &b = m.points[f[1]], &d = m.points[f[2]];
+      const double q = min_dihedral_sine(p, a, b, d);
+      if(q < old_worst || !bounds_.contains(p, a, b, d, q)) return false;
+      scratch_.push_back(q);
     }
     return true;
   }
@@ -145,42 +146,16 @@ public:
     for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
     {
       const int c = mesh_.incidences[k].cell;
-      if(!mesh_.in_mesh[c]) continue;
-      small_[c] = scratch_[i].first;
-      large_[c] = scratch_[i].second;
-      ++i;
+      if(mesh_.in_mesh[c]) quality_[c] = scratch_[i++];
     }
-  }
-
-  /// Over the six dihedral angles of a tetrahedron, the smallest |a + b|^2 (which
-  /// measures its smallest angle) and the smallest |a - b|^2 (its largest angle);
-  /// both are larger for a better tetrahedron.
-  static void cell_measures(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double& small,
-                            double& large)
-  {
-    const Point* p[4] = {&p0, &p1, &p2, &p3};
-    Vector n[4];
-    for(int k = 0; k < 4; ++k)
-    {
-      const auto& o = internal::kOpposite[k];
-      n[k] = CGAL::cross_product(*p[o[1]] - *p[o[0]], *p[o[2]] - *p[o[0]]);   // outward
-      const double len = std::sqrt(n[k].squared_length());
-      n[k] = len > 0 ? n[k] / len : n[k];
-    }
-    small = large = 4;
-    for(int k = 0; k < 4; ++k)
-      for(int l = k + 1; l < 4; ++l)
-      {
-        small = std::min(small, (n[k] + n[l]).squared_length());
-        large = std::min(large, (n[k] - n[l]).squared_length());
-      }
   }
 
 private:
   Smoothing_mesh<K>& mesh_;
   bool quality_guard_;
-  std::vector<double> small_, large_;   // per cell, see cell_measures
-  std::vector<std::pair<double, double>> scratch_;
+  Dihedral_bounds bounds_;
+  std::vector<double> quality_;   // per cell: minimum dihedral sine
+  std::vector<double> scratch_;
   Refusal last_refusal_ = Refusal::worsens_quality;
   Refusal first_refusal_ = Refusal::worsens_quality;
 };

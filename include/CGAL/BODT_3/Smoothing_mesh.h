@@ -85,30 +85,13 @@ struct Smoothing_mesh
     return in_mesh[cell] && (n < 0 || !in_mesh[n]);
   }
 
+  /// Derives the second block. `neighbor` may be given already (an adapter that
+  /// knows the adjacency fills it); otherwise it is found by matching facets.
   void build_incidences()
   {
     const int nv = static_cast<int>(points.size());
     const int nc = static_cast<int>(cells.size());
-
-    // Cell adjacency through shared facets.
-    neighbor.assign(4 * cells.size(), -1);
-    std::unordered_map<std::array<int, 3>, int, internal::Facet_key_hash> open;
-    open.reserve(2 * cells.size());
-    for(int c = 0; c < nc; ++c)
-      for(int i = 0; i < 4; ++i)
-      {
-        const auto& o = internal::kOpposite[i];
-        const auto key = internal::sorted({cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]});
-        auto it = open.find(key);
-        if(it == open.end())
-          open.emplace(key, 4 * c + i);
-        else
-        {
-          neighbor[4 * c + i] = it->second / 4;
-          neighbor[it->second] = c;
-          open.erase(it);
-        }
-      }
+    if(neighbor.size() != 4 * cells.size()) find_neighbors();
 
     // Vertex -> incident cells, with the face opposite the vertex.
     incidence_begin.assign(nv + 1, 0);
@@ -170,6 +153,30 @@ struct Smoothing_mesh
     }
     for(int k = boundary_begin[v]; k < boundary_begin[v + 1]; ++k)
       star.boundary.push_back({points[boundary_facets[k][0]], points[boundary_facets[k][1]]});
+  }
+
+private:
+  // Cell adjacency through shared facets.
+  void find_neighbors()
+  {
+    neighbor.assign(4 * cells.size(), -1);
+    std::unordered_map<std::array<int, 3>, int, internal::Facet_key_hash> open;
+    open.reserve(2 * cells.size());
+    for(int c = 0; c < static_cast<int>(cells.size()); ++c)
+      for(int i = 0; i < 4; ++i)
+      {
+        const auto& o = internal::kOpposite[i];
+        const auto key = internal::sorted({cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]});
+        auto it = open.find(key);
+        if(it == open.end())
+          open.emplace(key, 4 * c + i);
+        else
+        {
+          neighbor[4 * c + i] = it->second / 4;
+          neighbor[it->second] = c;
+          open.erase(it);
+        }
+      }
   }
 };
 

@@ -20,9 +20,27 @@ enum class Moving_vertices
   NONE        // no smoothing: topology optimization (and insertion) alone
 };
 
+/// How the topology passes work (see flip_pass.h).
+struct Flip_options
+{
+  /// Cells whose minimum dihedral sine is below this are the ones a pass tries to
+  /// improve (0.5: a dihedral angle below 30 or above 150 degrees). Larger values
+  /// try more cells and cost more; see doc/manual.md for the measurement.
+  double quality_threshold = 0.5;
+  /// Also improve cells outside the complex (the padding of a C3T3 to its convex
+  /// hull), whose flatness can block boundary vertices.
+  bool flip_outside = false;
+  int max_ring = 10;    // edge removal: largest ring tried
+  int max_faces = 10;   // multi-face removal: largest sandwich explored
+};
+
+/// With `max_iteration_number = 0` (no limit), the pipeline still stops after this
+/// many iterations, so that every run ends.
+constexpr std::size_t unlimited_iteration_cap = 1000;
+
 struct Smoothing_options
 {
-  std::size_t max_iteration_number = 20;   // the paper's 20 sweeps; 0 means no limit
+  std::size_t max_iteration_number = 20;   // the paper's 20 iterations; 0: no limit but `unlimited_iteration_cap`
   double time_limit = 0;                   // seconds; 0 means no limit
   /// Stop when no vertex moved by more than this fraction of its local size
   /// (cube root of the mean volume of its cells) in a sweep; 0 disables the test.
@@ -33,6 +51,7 @@ struct Smoothing_options
   /// After each sweep, flips (edge removal, multi-face removal, coplanar boundary
   /// flips) wherever they improve the worst tetrahedron they touch (paper, Fig. 1).
   bool topology_optimization = true;
+  Flip_options flips;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
   /// At most this many vertices are inserted; a negative value means 5% of the

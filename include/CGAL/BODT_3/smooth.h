@@ -3,71 +3,97 @@
 #ifndef CGAL_BODT_3_SMOOTH_H
 #define CGAL_BODT_3_SMOOTH_H
 
+#include <CGAL/BODT_3/IO/c3t3_conversion.h>
+#include <CGAL/BODT_3/Mesh_labels.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/Triangulation_view.h>
 #include <CGAL/BODT_3/mesh_quality.h>
-#include <CGAL/BODT_3/smooth_mesh.h>
-#include <CGAL/BODT_3/triangulation_adapter.h>
+#include <CGAL/BODT_3/optimize_mesh.h>
 
 #include <type_traits>
 
 namespace CGAL {
 namespace BODT_3 {
 
-/// B-ODT smoothing of a `Mesh_complex_3_in_triangulation_3`: the cells in the
-/// complex are the mesh, each subdomain keeps its volume, and the features the
-/// complex knows (Mesh_3's protected curves and corners, surface patches) are kept.
+/// The pipeline (optimize_mesh.h) on a `Mesh_complex_3_in_triangulation_3`: the
+/// cells in the complex are the mesh, each subdomain keeps its volume, and the
+/// features the complex knows (Mesh_3's protected curves and corners, surface
+/// patches) are kept. Flips and insertion change the complex's triangulation.
 template <class C3T3, class Visitor = Null_smoothing_visitor>
 std::enable_if_t<internal::Is_c3t3<C3T3>::value, Smoothing_result>
 smooth(C3T3& c3t3, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
-  Triangulation_adapter<typename C3T3::Triangulation> adapter(c3t3.triangulation());
-  const Feature_hints hints = c3t3_feature_hints(c3t3, adapter);
-  adapter.mesh().build_incidences();
-  const Smoothing_result r = smooth_mesh(adapter.mesh(), hints, options, visitor);
-  adapter.write_back();
-  return r;
+  C3t3_labels<C3T3> labels(c3t3);
+  auto classify = [&c3t3](const auto& view, const Classification_options& opt) {
+    return classify_vertices(view.mesh(), c3t3_feature_hints(c3t3, view), opt);
+  };
+  return optimize_mesh(labels, classify, options, visitor);
 }
 
-/// B-ODT smoothing of a `Triangulation_3`: its finite cells are the mesh, its
-/// convex hull the boundary, and the hull stays convex. Features are found by
-/// tensor voting. The connectivity is kept, so a Delaunay triangulation is in
-/// general no longer Delaunay afterwards.
+/// The pipeline on a `Triangulation_3`: its finite cells are the mesh, its convex
+/// hull the boundary, and the hull stays convex. Features are found by tensor
+/// voting. A Delaunay triangulation is in general no longer Delaunay afterwards.
 template <class Tr, class Visitor = Null_smoothing_visitor>
 std::enable_if_t<!internal::Is_c3t3<Tr>::value && !std::is_same<Tr, Tet_mesh>::value, Smoothing_result>
 smooth(Tr& tr, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
-  Triangulation_adapter<Tr> adapter(tr);
-  adapter.mesh().build_incidences();
-  const Smoothing_result r = smooth_mesh(adapter.mesh(), Feature_hints(), options, visitor);
-  adapter.write_back();
-  return r;
+  Triangulation_labels<Tr> labels(tr);
+  const Feature_hints none;
+  return optimize_mesh(labels, Classify_by_hints{none}, options, visitor);
 }
 
-/// B-ODT smoothing of a mesh read from a file. Tetrahedra labelled 0 are outside
-/// the mesh (unless all are), but stay valid; `Edges`, `Corners`, `RequiredVertices`
-/// and triangle labels give the features, and tensor voting is used when none is given.
+/// The pipeline on a mesh read from a file. Tetrahedra labelled 0 are outside the
+/// mesh (unless all are), but stay valid; `Edges`, `Corners`, `RequiredVertices`
+/// and triangle labels give the features, and tensor voting is used when none is
+/// given. The mesh becomes a `Tet_mesh_c3t3` (tet_mesh_to_c3t3), goes through the
+/// same pipeline, and comes back with `update_tet_mesh`. Throws `Mesh_io_error` for
+/// a mesh no triangulation can hold.
 template <class Visitor = Null_smoothing_visitor>
 Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
   using K = Tet_mesh::Kernel;
-  Smoothing_mesh<K> mesh;
-  mesh.points = tm.points;
-  mesh.cells = tm.tets;
+  // The classification reads the file's own feature information.
+  Smoothing_mesh<K> flat;
+  flat.points = tm.points;
+  flat.cells = tm.tets;
   const bool all_zero = tm.all_labels_zero();
-  mesh.in_mesh.resize(tm.tets.size());
-  for(std::size_t t = 0; t < tm.tets.size(); ++t) mesh.in_mesh[t] = tm.in_mesh(t, all_zero) ? 1 : 0;
-  mesh.subdomain = tm.tet_labels;
-  mesh.build_incidences();
-
+  flat.in_mesh.resize(tm.tets.size());
+  for(std::size_t t = 0; t < tm.tets.size(); ++t) flat.in_mesh[t] = tm.in_mesh(t, all_zero) ? 1 : 0;
+  flat.subdomain = tm.tet_labels;
+  flat.build_incidences();
   Feature_hints hints;
   hints.feature_edges = tm.edges;
   hints.corners = tm.corners;
   hints.corners.insert(hints.corners.end(), tm.required_vertices.begin(), tm.required_vertices.end());
   for(std::size_t f = 0; f < tm.triangles.size(); ++f) hints.facet_patches.push_back({tm.triangles[f], tm.triangle_labels[f]});
 
-  const Smoothing_result r = smooth_mesh(mesh, hints, options, visitor);
-  tm.points = mesh.points;
+  Tet_mesh_c3t3 c3t3;
+  std::vector<Tet_mesh_c3t3::Vertex_handle> handles;
+  tet_mesh_to_c3t3(tm, c3t3, std::string(), &handles);
+  C3t3_labels<Tet_mesh_c3t3> labels(c3t3);
+  auto classify = [&](const auto& view, const Classification_options& opt) {
+    const Vertex_classification by_file = classify_vertices(flat, hints, opt);
+    Vertex_classification cls;
+    cls.kind.assign(view.vertices().size(), Vertex_kind::fixed);
+    cls.curve_neighbors.assign(view.vertices().size(), {-1, -1});
+    cls.used_tensor_voting = by_file.used_tensor_voting;
+    cls.non_manifold = by_file.non_manifold;
+    for(std::size_t i = 0; i < handles.size(); ++i)
+    {
+      if(handles[i] == Tet_mesh_c3t3::Vertex_handle()) continue;
+      const int v = view.index(handles[i]);
+      cls.kind[v] = by_file.kind[i];
+      for(int k = 0; k < 2; ++k)
+      {
+        const int n = by_file.curve_neighbors[i][k];
+        cls.curve_neighbors[v][k] = n >= 0 ? view.index(handles[n]) : -1;
+      }
+    }
+    return cls;
+  };
+  const Smoothing_result r = optimize_mesh(labels, classify, options, visitor);
+  update_tet_mesh(tm, c3t3, handles);
   return r;
 }
 

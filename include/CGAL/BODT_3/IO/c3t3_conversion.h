@@ -9,6 +9,8 @@
 #include <CGAL/BODT_3/IO/mesh_io.h>
 
 #include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Triangulation_utils_3.h>
 #include <CGAL/number_utils.h>
 
@@ -16,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <iostream>
+#include <iterator>
 #include <map>
 #include <string>
 #include <type_traits>
@@ -129,8 +132,12 @@ private:
 /// whose tetrahedra only touch there, a face of three tetrahedra, tetrahedra of
 /// inconsistent or negative orientation, bad indices, or an `Edges` entry that is
 /// no edge of the tetrahedra. `c3t3` is unchanged then.
+///
+/// When `handles` is given, it receives the vertex of each point (a default handle
+/// for points no tetrahedron uses), for `update_tet_mesh`.
 template <class C3T3>
-void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file = std::string())
+void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file = std::string(),
+                      std::vector<typename C3T3::Vertex_handle>* handles = nullptr)
 {
   using namespace internal_c3t3;
   using Tr = typename C3T3::Triangulation;
@@ -371,6 +378,7 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
     }
 
   c3t3.swap(result);
+  if(handles) handles->swap(vh);
 }
 
 /// The cells of `c3t3`'s complex as a `Tet_mesh`:
@@ -454,6 +462,173 @@ Tet_mesh c3t3_to_tet_mesh(const C3T3& c3t3)
     if(it != index.end()) mesh.corners.push_back(it->second);
   }
   return mesh;
+}
+
+/// A C3T3 type that holds what a mesh file holds: integral subdomain, surface
+/// patch (the file's triangle labels), curve and corner indices.
+struct Tet_mesh_domain_indices
+{
+  using R = Tet_mesh::Kernel;
+  using Point_3 = R::Point_3;
+  using Subdomain_index = int;
+  using Surface_patch_index = int;
+  using Curve_index = int;
+  using Corner_index = int;
+  using Index = int;
+  using Has_features = CGAL::Tag_true;
+};
+using Tet_mesh_triangulation = CGAL::Mesh_triangulation_3<Tet_mesh_domain_indices>::type;
+using Tet_mesh_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tet_mesh_triangulation, int, int>;
+
+/// Writes back into `mesh` what a pipeline did to `c3t3`, which
+/// `tet_mesh_to_c3t3(mesh, c3t3, file, &handles)` built:
+///  - points: every point keeps its index and gets its vertex's position; vertices
+///    added to the triangulation are appended (reference 0);
+///  - tets: the finite cells, labelled with their subdomain, or 0 outside the
+///    complex (0 for all when every input label was 0);
+///  - triangles (only if the input had some): the facets of the complex whose patch
+///    is a label of the input's triangles; a facet the input listed keeps its place
+///    and orientation, new ones (from flips and splits) follow, oriented as
+///    `c3t3_to_tet_mesh` orients them;
+///  - edges: the input's edges, each replaced in place by the curve edges it was
+///    split into; ridges follow their edges; corners and required vertices stay.
+template <class C3T3>
+void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typename C3T3::Vertex_handle>& handles)
+{
+  using namespace internal_c3t3;
+  using Tr = typename C3T3::Triangulation;
+  using Vertex_handle = typename Tr::Vertex_handle;
+  using U = Triangulation_utils_3;
+  const Tr& tr = c3t3.triangulation();
+  auto cp = tr.geom_traits().construct_point_3_object();
+  const bool all_zero = mesh.all_labels_zero();
+
+  std::unordered_map<Vertex_handle, int> index;
+  for(std::size_t i = 0; i < handles.size(); ++i)
+    if(handles[i] != Vertex_handle())
+    {
+      index.emplace(handles[i], static_cast<int>(i));
+      const auto& p = cp(handles[i]->point());
+      mesh.points[i] = Tet_mesh::Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    if(index.emplace(v, static_cast<int>(mesh.points.size())).second)
+    {
+      const auto& p = cp(v->point());
+      mesh.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      mesh.vertex_refs.push_back(0);
+    }
+
+  mesh.tets.clear();
+  mesh.tet_labels.clear();
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+  {
+    mesh.tets.push_back({index.at(c->vertex(0)), index.at(c->vertex(1)), index.at(c->vertex(2)),
+                         index.at(c->vertex(3))});
+    mesh.tet_labels.push_back(all_zero || !c3t3.is_in_complex(c) ? 0 : static_cast<int>(c3t3.subdomain_index(c)));
+  }
+
+  if(!mesh.triangles.empty())
+  {
+    std::map<int, bool> labels;
+    for(int l : mesh.triangle_labels) labels[l] = true;
+    std::unordered_map<std::array<int, 3>, int, internal::Sorted_triple_hash> present;   // sorted -> patch
+    std::vector<std::array<int, 3>> added;
+    std::vector<int> added_labels;
+    for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    {
+      const int patch = static_cast<int>(c3t3.surface_patch_index(*f));
+      if(!labels.count(patch)) continue;
+      const auto mirror = tr.mirror_facet(*f);
+      const bool flip = !c3t3.is_in_complex(f->first) ||
+                        (c3t3.is_in_complex(mirror.first) &&
+                         c3t3.subdomain_index(mirror.first) < c3t3.subdomain_index(f->first));
+      const auto& side = flip ? mirror : *f;
+      std::array<int, 3> t;
+      for(int k = 0; k < 3; ++k) t[k] = index.at(side.first->vertex(U::vertex_triple_index(side.second, 2 - k)));
+      present.emplace(sorted(t), patch);
+      added.push_back(t);
+      added_labels.push_back(patch);
+    }
+    std::vector<std::array<int, 3>> triangles;
+    std::vector<int> triangle_labels;
+    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    {
+      const auto it = present.find(sorted(mesh.triangles[f]));
+      if(it == present.end()) continue;
+      triangles.push_back(mesh.triangles[f]);
+      triangle_labels.push_back(mesh.triangle_labels[f]);
+      it->second = -1;   // written
+    }
+    for(std::size_t f = 0; f < added.size(); ++f)
+    {
+      auto& written = present.at(sorted(added[f]));
+      if(written == -1) continue;
+      written = -1;
+      triangles.push_back(added[f]);
+      triangle_labels.push_back(added_labels[f]);
+    }
+    mesh.triangles.swap(triangles);
+    mesh.triangle_labels.swap(triangle_labels);
+  }
+
+  // Edges: an input edge no longer in the complex was split; its pieces run from
+  // one end to the other through added curve vertices.
+  std::vector<std::array<int, 2>> edges;
+  std::vector<int> edge_labels;
+  std::vector<int> first_piece(mesh.edges.size() + 1, 0);
+  for(std::size_t e = 0; e < mesh.edges.size(); ++e)
+  {
+    const int a = mesh.edges[e][0], b = mesh.edges[e][1];
+    const Vertex_handle va = handles[a], vb = handles[b];
+    if(c3t3.is_in_complex(va, vb))
+    {
+      edges.push_back(mesh.edges[e]);
+      edge_labels.push_back(mesh.edge_labels[e]);
+    }
+    else
+    {
+      // Walk from `a` through added vertices, trying each first step, until an
+      // original vertex: the walk that ends at `b` is the split edge.
+      const int original = static_cast<int>(handles.size());
+      std::vector<std::pair<Vertex_handle, typename C3T3::Curve_index>> around;
+      std::vector<int> chain;
+      c3t3.adjacent_vertices_in_complex(va, std::back_inserter(around));
+      const auto starts = around;
+      for(const auto& start : starts)
+      {
+        chain.assign(1, a);
+        Vertex_handle prev = va, cur = start.first;
+        while(index.at(cur) >= original)
+        {
+          chain.push_back(index.at(cur));
+          around.clear();
+          c3t3.adjacent_vertices_in_complex(cur, std::back_inserter(around));
+          Vertex_handle next;
+          for(const auto& x : around)
+            if(x.first != prev) next = x.first;
+          if(next == Vertex_handle() || chain.size() > handles.size() + mesh.points.size()) break;
+          prev = cur;
+          cur = next;
+        }
+        if(cur != vb || chain.size() < 2) continue;
+        chain.push_back(b);
+        for(std::size_t k = 0; k + 1 < chain.size(); ++k)
+        {
+          edges.push_back({chain[k], chain[k + 1]});
+          edge_labels.push_back(mesh.edge_labels[e]);
+        }
+        break;
+      }
+    }
+    first_piece[e + 1] = static_cast<int>(edges.size());
+  }
+  std::vector<int> ridges;
+  for(int r : mesh.ridges)
+    for(int k = first_piece[r]; k < first_piece[r + 1]; ++k) ridges.push_back(k);
+  mesh.edges.swap(edges);
+  mesh.edge_labels.swap(edge_labels);
+  mesh.ridges.swap(ridges);
 }
 
 /// Reads a mesh file (see `IO::read_mesh`) into `c3t3` with `tet_mesh_to_c3t3`.

@@ -1,13 +1,15 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_BODT_3_TRIANGULATION_ADAPTER_H
-#define CGAL_BODT_3_TRIANGULATION_ADAPTER_H
+#ifndef CGAL_BODT_3_TRIANGULATION_VIEW_H
+#define CGAL_BODT_3_TRIANGULATION_VIEW_H
 
+#include <CGAL/BODT_3/Mesh_labels.h>
 #include <CGAL/BODT_3/Smoothing_mesh.h>
 #include <CGAL/BODT_3/Vertex_classification.h>
 
 #include <CGAL/Kernel_traits.h>
 
+#include <iterator>
 #include <map>
 #include <stdexcept>
 #include <type_traits>
@@ -17,15 +19,19 @@
 namespace CGAL {
 namespace BODT_3 {
 
-/// Copies a 3D triangulation (a `Triangulation_3`, `Delaunay_triangulation_3`,
-/// `Regular_triangulation_3`, or the triangulation of a C3T3) into a
-/// `Smoothing_mesh` and writes the smoothed positions back. Connectivity is
-/// never changed: only `Vertex::set_point` is called, with the vertex's weight
-/// kept for weighted points.
-template <class Tr>
-class Triangulation_adapter
+/// The flat view (`Smoothing_mesh`) of a 3D triangulation (`Triangulation_3`,
+/// `Delaunay_triangulation_3`, `Regular_triangulation_3`, or the triangulation of
+/// a C3T3) that the smoothing sweeps work on, with stable vertex ids (the order of
+/// the finite vertices, vertices added later appended). `Labels` (Mesh_labels.h)
+/// says which cells are the mesh and their subdomains. The view never changes the
+/// connectivity: flips and insertion change the triangulation, and `refresh`
+/// re-reads its cells. Positions go back with `Vertex::set_point`, keeping the
+/// weight of weighted points.
+template <class Labels>
+class Triangulation_view
 {
 public:
+  using Tr = typename Labels::Triangulation;
   using Vertex_handle = typename Tr::Vertex_handle;
   using Cell_handle = typename Tr::Cell_handle;
   using Bare_point = std::decay_t<decltype(std::declval<typename Tr::Geom_traits>().construct_point_3_object()(
@@ -33,33 +39,57 @@ public:
   using Kernel = typename CGAL::Kernel_traits<Bare_point>::Kernel;
   using Mesh = Smoothing_mesh<Kernel>;
 
-  /// Fills `mesh` with the points, the finite cells (all in the mesh, subdomain 1,
-  /// until `set_cell_labels` says otherwise) and the hull checks of `tr`.
-  explicit Triangulation_adapter(Tr& tr) : tr_(tr)
+  explicit Triangulation_view(Labels& labels) : labels_(labels)
   {
-    if(tr.dimension() != 3)
+    if(labels.triangulation().dimension() != 3)
       throw std::invalid_argument("B-ODT smoothing needs a triangulation of dimension 3");
-    auto cp = tr.geom_traits().construct_point_3_object();
-    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-    {
-      index_.emplace(v, static_cast<int>(handles_.size()));
-      handles_.push_back(v);
-      mesh_.points.push_back(cp(v->point()));
-    }
-    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
-    {
-      cells_.push_back(c);
-      mesh_.cells.push_back({index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))});
-    }
-    mesh_.in_mesh.assign(mesh_.cells.size(), 1);
-    mesh_.subdomain.assign(mesh_.cells.size(), 1);
-    add_hull_checks();
+    refresh();
   }
 
   Mesh& mesh() { return mesh_; }
+  const Mesh& mesh() const { return mesh_; }
   const std::vector<Cell_handle>& cells() const { return cells_; }
   const std::vector<Vertex_handle>& vertices() const { return handles_; }
   int index(Vertex_handle v) const { return index_.at(v); }
+
+  /// Re-reads the cells (and any new vertex) of the triangulation, with their
+  /// regions, the hull checks and the incidences.
+  void refresh()
+  {
+    Tr& tr = labels_.triangulation();
+    auto cp = tr.geom_traits().construct_point_3_object();
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      if(index_.emplace(v, static_cast<int>(handles_.size())).second)
+      {
+        handles_.push_back(v);
+        mesh_.points.push_back(cp(v->point()));
+      }
+    cells_.clear();
+    mesh_.cells.clear();
+    mesh_.in_mesh.clear();
+    mesh_.subdomain.clear();
+    cell_index_.clear();
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+    {
+      cell_index_.emplace(c, static_cast<int>(cells_.size()));
+      cells_.push_back(c);
+      mesh_.cells.push_back({index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))});
+      const auto r = labels_.region(c);
+      mesh_.in_mesh.push_back(r.kind == Region_kind::mesh ? 1 : 0);
+      mesh_.subdomain.push_back(r.kind == Region_kind::mesh ? static_cast<int>(r.subdomain) : 0);
+    }
+    // The adjacency is the triangulation's (the view's facet k is opposite vertex k, as in the cell).
+    mesh_.neighbor.assign(4 * cells_.size(), -1);
+    for(std::size_t c = 0; c < cells_.size(); ++c)
+      for(int i = 0; i < 4; ++i)
+      {
+        const auto it = cell_index_.find(cells_[c]->neighbor(i));
+        if(it != cell_index_.end()) mesh_.neighbor[4 * c + i] = it->second;
+      }
+    mesh_.hull_checks.clear();
+    add_hull_checks();
+    mesh_.build_incidences();
+  }
 
   /// Writes the positions of `mesh()` back into the triangulation.
   void write_back()
@@ -80,7 +110,7 @@ private:
   }
   void set_bare_point(Vertex_handle v, const Bare_point& p)
   {
-    auto cp = tr_.geom_traits().construct_point_3_object();
+    auto cp = labels_.triangulation().geom_traits().construct_point_3_object();
     if(cp(v->point()) != p) set_bare(v, p);
   }
 
@@ -89,10 +119,12 @@ private:
   // checks that do not hold now (a hull that is not convex there) are left out.
   void add_hull_checks()
   {
-    const Vertex_handle inf = tr_.infinite_vertex();
-    for(auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c)
+    Tr& tr = labels_.triangulation();
+    const Vertex_handle inf = tr.infinite_vertex();
+    std::vector<Cell_handle> hull;
+    tr.tds().incident_cells(inf, std::back_inserter(hull));
+    for(const Cell_handle& c : hull)
     {
-      if(!c->has_vertex(inf)) continue;
       const int i = c->index(inf);
       const Cell_handle fc = c->neighbor(i);
       const int j = fc->index(c);
@@ -113,42 +145,34 @@ private:
     }
   }
 
-  Tr& tr_;
+  Labels& labels_;
   Mesh mesh_;
   std::vector<Vertex_handle> handles_;
   std::vector<Cell_handle> cells_;
   std::unordered_map<Vertex_handle, int> index_;
+  std::unordered_map<Cell_handle, int> cell_index_;
 };
 
-/// For a `Mesh_complex_3_in_triangulation_3`: marks the cells in the complex with
-/// their subdomain, and collects what the complex knows of its features (vertex
-/// dimensions, curve edges, corners, surface patches).
-template <class C3T3>
-Feature_hints c3t3_feature_hints(const C3T3& c3t3, Triangulation_adapter<typename C3T3::Triangulation>& adapter)
+/// What a `Mesh_complex_3_in_triangulation_3` knows of its features: vertex
+/// dimensions, curve edges, corners and surface patches, by view vertex id.
+template <class C3T3, class View>
+Feature_hints c3t3_feature_hints(const C3T3& c3t3, const View& view)
 {
-  auto& mesh = adapter.mesh();
-  const auto& cells = adapter.cells();
-  for(std::size_t c = 0; c < cells.size(); ++c)
-  {
-    mesh.in_mesh[c] = c3t3.is_in_complex(cells[c]) ? 1 : 0;
-    mesh.subdomain[c] = mesh.in_mesh[c] ? static_cast<int>(c3t3.subdomain_index(cells[c])) : 0;
-  }
   Feature_hints hints;
-  hints.dimension.resize(adapter.vertices().size());
-  for(std::size_t v = 0; v < adapter.vertices().size(); ++v)
-    hints.dimension[v] = static_cast<signed char>(c3t3.in_dimension(adapter.vertices()[v]));
+  hints.dimension.resize(view.vertices().size());
+  for(std::size_t v = 0; v < view.vertices().size(); ++v)
+    hints.dimension[v] = static_cast<signed char>(c3t3.in_dimension(view.vertices()[v]));
   for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e)
-    hints.feature_edges.push_back(
-        {adapter.index(e->first->vertex(e->second)), adapter.index(e->first->vertex(e->third))});
+    hints.feature_edges.push_back({view.index(e->first->vertex(e->second)), view.index(e->first->vertex(e->third))});
   for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
-    hints.corners.push_back(adapter.index(v));
+    hints.corners.push_back(view.index(v));
   std::map<typename C3T3::Surface_patch_index, int> patch_ids;
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
   {
     const auto id = patch_ids.emplace(c3t3.surface_patch_index(*f), static_cast<int>(patch_ids.size())).first->second;
     std::array<int, 3> t;
     for(int k = 0, m = 0; k < 4; ++k)
-      if(k != f->second) t[m++] = adapter.index(f->first->vertex(k));
+      if(k != f->second) t[m++] = view.index(f->first->vertex(k));
     hints.facet_patches.push_back({t, id});
   }
   return hints;
@@ -157,4 +181,4 @@ Feature_hints c3t3_feature_hints(const C3T3& c3t3, Triangulation_adapter<typenam
 } // namespace BODT_3
 } // namespace CGAL
 
-#endif // CGAL_BODT_3_TRIANGULATION_ADAPTER_H
+#endif // CGAL_BODT_3_TRIANGULATION_VIEW_H

@@ -1,0 +1,149 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_SMOOTHING_SWEEP_H
+#define CGAL_BODT_3_SMOOTHING_SWEEP_H
+
+#include <CGAL/BODT_3/Move_guard.h>
+#include <CGAL/BODT_3/Smoothing_mesh.h>
+#include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/Tensor_voting.h>
+#include <CGAL/BODT_3/Vertex_classification.h>
+#include <CGAL/BODT_3/Volume_preserving_move.h>
+#include <CGAL/BODT_3/sweep_order.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// Smoothing sweeps over a `Smoothing_mesh`: every movable vertex, in
+/// `sweep_order`, gets its volume-preserving B-ODT move (`Volume_preserving_move`)
+/// through `Move_guard`. After the mesh's cells change (flips, insertion), call
+/// `refresh` with the vertices whose stars changed.
+template <class K>
+class Smoothing_sweep
+{
+public:
+  using Vector = typename K::Vector_3;
+
+  Smoothing_sweep(Smoothing_mesh<K>& mesh, const Vertex_classification& cls, const Smoothing_options& opt,
+                  const Dihedral_bounds& bounds)
+    : mesh_(mesh), cls_(cls), opt_(opt), guard_(mesh, opt.quality_guard, bounds),
+      dirty_(mesh.number_of_vertices(), 1), moved_once_(mesh.number_of_vertices(), 0)
+  {
+    derive();
+  }
+
+  /// After the cells of the mesh changed (and `build_incidences` ran), with the
+  /// vertices whose stars changed; vertices added since are appended to the
+  /// classification by the caller before this call.
+  void refresh(const std::vector<int>& changed)
+  {
+    dirty_.resize(mesh_.number_of_vertices(), 1);
+    moved_once_.resize(mesh_.number_of_vertices(), 0);
+    for(int v : changed) dirty_[v] = 1;
+    derive();
+    for(int v : changed)
+      for(int u : dependents_[v]) dirty_[u] = 1;
+    guard_.refresh();
+  }
+
+  /// One sweep; fills the move counts of `stats`.
+  void run(Iteration_stats& stats)
+  {
+    moved_.clear();
+    Vertex_star<K> star;
+    for(int v : order_.vertices)
+    {
+      if(!dirty_[v]) continue;
+      dirty_[v] = 0;
+      const Vertex_kind kind = cls_.kind[v];
+      mesh_.gather_star(v, star);
+      Vector direction(0, 0, 0);
+      if(kind == Vertex_kind::feature)
+      {
+        const auto& nb = cls_.curve_neighbors[v];
+        direction = nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]]
+                               : tensor_vote(star, opt_.tensor_voting).direction;
+      }
+      const Vector X = mover_(star, kind, direction);
+      if(X == CGAL::NULL_VECTOR) continue;
+      const double fraction = guard_.move(v, X);
+      if(fraction == 0)
+      {
+        ++stats.refused;
+        using Refusal = typename Move_guard<K>::Refusal;
+        switch(guard_.first_refusal())
+        {
+        case Refusal::inverts_mesh_cell: ++stats.refused_inverting_mesh_cell; break;
+        case Refusal::inverts_outside_cell: ++stats.refused_inverting_outside_cell; break;
+        case Refusal::breaks_convex_hull: ++stats.refused_breaking_hull; break;
+        case Refusal::worsens_quality: ++stats.refused_worsening_quality; break;
+        }
+        continue;
+      }
+      ++stats.moved;
+      if(fraction < 1) ++stats.shortened;
+      moved_once_[v] = 1;
+      moved_.push_back(v);
+      dirty_[v] = 1;
+      for(int u : dependents_[v]) dirty_[u] = 1;
+      double volume = 0;
+      for(const auto& c : star.cells) volume += CGAL::determinant(c.a - star.x0, c.b - star.x0, c.c - star.x0);
+      const double size = std::cbrt(volume / 6.0 / static_cast<double>(star.cells.size()));
+      stats.max_relative_move = std::max(stats.max_relative_move, fraction * std::sqrt(X.squared_length()) / size);
+    }
+  }
+
+  /// The vertices the last sweep moved.
+  const std::vector<int>& moved() const { return moved_; }
+
+  /// Distinct vertices moved so far.
+  std::size_t moved_vertices() const
+  {
+    return static_cast<std::size_t>(std::count(moved_once_.begin(), moved_once_.end(), 1));
+  }
+
+private:
+  // The sweep order and, per vertex, the vertices whose move depends on it: a
+  // vertex whose last move was zero or refused gets the same verdict again until
+  // a vertex of its star, or the far vertex of one of its hull checks, moves; such
+  // vertices are skipped, which changes no result.
+  void derive()
+  {
+    std::vector<char> movable(mesh_.number_of_vertices());
+    for(std::size_t v = 0; v < movable.size(); ++v) movable[v] = cls_.kind[v] != Vertex_kind::fixed;
+    order_ = sweep_order(mesh_, movable);
+    dependents_.assign(mesh_.number_of_vertices(), {});
+    for(int v : order_.vertices)
+    {
+      for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
+        for(int u : mesh_.incidences[k].face) dependents_[u].push_back(v);
+      for(int k = mesh_.hull_begin[v]; k < mesh_.hull_begin[v + 1]; ++k)
+        dependents_[mesh_.vertex_hull_checks[k][3]].push_back(v);
+    }
+    for(auto& d : dependents_)
+    {
+      std::sort(d.begin(), d.end());
+      d.erase(std::unique(d.begin(), d.end()), d.end());
+    }
+  }
+
+  Smoothing_mesh<K>& mesh_;
+  const Vertex_classification& cls_;
+  const Smoothing_options& opt_;
+  Move_guard<K> guard_;
+  Volume_preserving_move mover_;
+  Sweep_order order_;
+  std::vector<std::vector<int>> dependents_;
+  std::vector<char> dirty_;
+  std::vector<char> moved_once_;
+  std::vector<int> moved_;
+};
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_SMOOTHING_SWEEP_H

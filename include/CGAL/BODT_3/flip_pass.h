@@ -1,0 +1,231 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_FLIP_PASS_H
+#define CGAL_BODT_3_FLIP_PASS_H
+
+#include <CGAL/BODT_3/Edge_removal.h>
+#include <CGAL/BODT_3/Flip.h>
+#include <CGAL/BODT_3/Multi_face_removal.h>
+#include <CGAL/BODT_3/Smoothing_options.h>
+
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <initializer_list>
+#include <queue>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// What earlier passes learnt: the cells (by sorted vertex ids) tried in vain,
+/// when and how many times in a row, and per vertex when it or a vertex sharing an
+/// edge with it last changed (moved, or got a new star), on a clock that the caller
+/// advances at each sweep and the pass at each flip. A cell tried in vain is tried
+/// again only once its neighbourhood changed (its flips depend on nothing else,
+/// except for multi-face removals reaching further), and, after k failures in a
+/// row, only every 2^(k-1) passes (at most 8): smoothing keeps moving the vertices
+/// of a bad region a little, and such cells would otherwise be retried every pass.
+struct Flip_history
+{
+  struct Hash
+  {
+    std::size_t operator()(const std::array<int, 4>& a) const
+    {
+      std::size_t h = 0;
+      for(int x : a) h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::size_t>(x);
+      return h;
+    }
+  };
+  struct Failure
+  {
+    std::size_t clock;
+    std::size_t pass;
+    std::size_t count;
+  };
+  std::size_t clock = 0;
+  std::size_t pass = 0;   // set by the caller
+  std::vector<std::size_t> region_stamp;
+  std::unordered_map<std::array<int, 4>, Failure, Hash> failed;
+
+  bool worth_trying(const std::array<int, 4>& ids) const
+  {
+    const auto it = failed.find(ids);
+    if(it == failed.end()) return true;
+    const Failure& f = it->second;
+    const std::size_t wait = std::size_t(1) << std::min<std::size_t>(f.count - 1, 3);
+    if(pass < f.pass + wait) return false;
+    for(int v : ids)
+      if(v < static_cast<int>(region_stamp.size()) && region_stamp[v] > f.clock) return true;
+    return false;
+  }
+
+  void record_failure(const std::array<int, 4>& ids)
+  {
+    auto ins = failed.emplace(ids, Failure{clock, pass, 1});
+    if(!ins.second) ins.first->second = Failure{clock, pass, ins.first->second.count + 1};
+  }
+};
+
+/// One topology pass: the cells below the quality threshold, worst first, each
+/// get the best of the edge removals of their six edges and the multi-face
+/// removals rooted at their four faces, if it raises the worst quality of the
+/// cells it replaces; new cells below the threshold are tried again. Every
+/// accepted flip strictly raises the worst cell of its region, so the pass ends.
+/// The order depends only on the mesh (ties are broken by `vertex_id`, stable ids
+/// of the vertices), so the same input gives the same output.
+///
+/// `touched` receives the vertices of every cell created (with repetitions).
+/// `history` (optional) lets the pass skip cells tried in vain before whose
+/// neighbourhood has not changed since.
+template <class Labels, class Vertex_id>
+Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral_bounds& bounds,
+                         const Vertex_id& vertex_id, std::vector<typename Labels::Vertex_handle>& touched,
+                         Flip_history* history = nullptr)
+{
+  using Vertex_handle = typename Labels::Vertex_handle;
+  using Cell_handle = typename Labels::Cell_handle;
+  CGAL::Real_timer timer;
+  timer.start();
+
+  const Flip_context<Labels> ctx(labels, bounds, opt.flip_outside);
+  Edge_removal<Labels> edge_removal;
+  edge_removal.max_ring = opt.max_ring;
+  Multi_face_removal<Labels> face_removal;
+  face_removal.max_faces = opt.max_faces;
+
+  struct Entry
+  {
+    double quality;
+    std::array<int, 4> ids;   // sorted
+    Cell_handle cell;
+    std::array<Vertex_handle, 4> vertices;
+    bool operator<(const Entry& o) const   // for a max-heap that pops the worst first
+    {
+      if(quality != o.quality) return quality > o.quality;
+      return ids > o.ids;
+    }
+  };
+  std::priority_queue<Entry> queue;
+  auto push = [&](Cell_handle c) {
+    if(!ctx.flippable(labels.region(c))) return;
+    const double q = ctx.quality(c);
+    if(!(q < opt.quality_threshold)) return;
+    Entry e{q, {}, c, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
+    for(int k = 0; k < 4; ++k) e.ids[k] = vertex_id(e.vertices[k]);
+    std::sort(e.ids.begin(), e.ids.end());
+    queue.push(e);
+  };
+  auto& tr = labels.triangulation();
+  std::size_t cells = 0;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c, ++cells) push(c);
+
+  // Within the pass, geometry is fixed: an edge removal or a face removal found
+  // useless stays so until a flip touches its vertices.
+  std::unordered_map<std::uint64_t, std::size_t> useless_edges;
+  std::unordered_map<std::array<int, 4>, std::size_t, Flip_history::Hash> useless_faces;   // face ids and apex
+  std::vector<std::size_t> touched_at;
+  std::size_t flips_done = 0;
+  auto last_touch = [&](int id) { return id < static_cast<int>(touched_at.size()) ? touched_at[id] : 0; };
+  auto still_useless = [&](std::size_t when, std::initializer_list<Vertex_handle> vs) {
+    for(Vertex_handle x : vs)
+      if(!tr.is_infinite(x) && last_touch(vertex_id(x)) > when) return false;
+    return true;
+  };
+
+  Topology_stats stats;
+  Flip<Labels> candidate, best;
+  std::vector<Cell_handle> created;
+  const std::size_t max_flips = 4 * cells + 16;
+  while(!queue.empty() && stats.total() < max_flips)
+  {
+    const Entry e = queue.top();
+    queue.pop();
+    if(!labels.tds().cells().is_used(e.cell) ||
+       !(e.cell->has_vertex(e.vertices[0]) && e.cell->has_vertex(e.vertices[1]) && e.cell->has_vertex(e.vertices[2]) &&
+         e.cell->has_vertex(e.vertices[3])))
+      continue;   // replaced since it was queued
+    if(history && !history->worth_trying(e.ids)) continue;
+    const Cell_handle c = e.cell;
+
+    best.clear();
+    auto consider = [&]() {
+      if(candidate.improves() && candidate.new_worst > best.new_worst) std::swap(best, candidate);
+    };
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j)
+      {
+        const int a = vertex_id(c->vertex(i)), b = vertex_id(c->vertex(j));
+        const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b));
+        const auto known = useless_edges.find(key);
+        if(known != useless_edges.end() && still_useless(known->second, {c->vertex(i), c->vertex(j)})) continue;
+        if(edge_removal(ctx, c, i, j, candidate) && candidate.improves())
+          consider();
+        else
+          useless_edges[key] = flips_done;
+      }
+    for(int i = 0; i < 4; ++i)
+    {
+      const Cell_handle n = c->neighbor(i);
+      const Vertex_handle apex = n->vertex(n->index(c));
+      if(tr.is_infinite(apex)) continue;
+      std::array<int, 4> key;
+      for(int k = 0, m = 0; k < 4; ++k)
+        if(k != i) key[m++] = vertex_id(c->vertex(k));
+      std::sort(key.begin(), key.begin() + 3);
+      key[3] = std::min(vertex_id(apex), vertex_id(c->vertex(i)));
+      const auto known = useless_faces.find(key);
+      if(known != useless_faces.end() &&
+         still_useless(known->second, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3), apex}))
+        continue;
+      if(face_removal(ctx, c, i, candidate) && candidate.improves())
+        consider();
+      else
+        useless_faces[key] = flips_done;
+    }
+    created.clear();
+    if(!best.improves() || !replace_cells(labels, best.old_cells, best.new_cells, best.new_facets, &created))
+    {
+      if(history) history->record_failure(e.ids);
+      continue;
+    }
+    switch(best.kind)
+    {
+    case Flip_kind::flip_2_3: ++stats.flips_2_3; break;
+    case Flip_kind::flip_3_2: ++stats.flips_3_2; break;
+    case Flip_kind::edge_removal: ++stats.edge_removals; break;
+    case Flip_kind::multi_face_removal: ++stats.multi_face_removals; break;
+    }
+    if(best.boundary) ++stats.boundary_flips;
+    if(history) ++history->clock;
+    ++flips_done;
+    for(Cell_handle n : created)
+      for(int k = 0; k < 4; ++k)
+      {
+        touched.push_back(n->vertex(k));
+        if(!tr.is_infinite(n->vertex(k)))
+        {
+          const int id = vertex_id(n->vertex(k));
+          if(id >= static_cast<int>(touched_at.size())) touched_at.resize(id + 1, 0);
+          touched_at[id] = flips_done;
+        }
+        if(history && !tr.is_infinite(n->vertex(k)))
+        {
+          const int id = vertex_id(n->vertex(k));
+          if(id < static_cast<int>(history->region_stamp.size())) history->region_stamp[id] = history->clock;
+        }
+      }
+    for(Cell_handle n : created)
+      if(!tr.is_infinite(n)) push(n);
+  }
+  stats.seconds = timer.time();
+  return stats;
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_FLIP_PASS_H

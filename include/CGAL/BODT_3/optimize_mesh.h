@@ -1,0 +1,141 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_OPTIMIZE_MESH_H
+#define CGAL_BODT_3_OPTIMIZE_MESH_H
+
+#include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/Smoothing_sweep.h>
+#include <CGAL/BODT_3/Triangulation_view.h>
+#include <CGAL/BODT_3/Vertex_classification.h>
+#include <CGAL/BODT_3/flip_pass.h>
+#include <CGAL/BODT_3/tet_quality.h>
+
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// Classifies the vertices of a view from the features the input knows.
+struct Classify_by_hints
+{
+  const Feature_hints& hints;
+
+  template <class View>
+  Vertex_classification operator()(const View& view, const Classification_options& opt) const
+  {
+    return classify_vertices(view.mesh(), hints, opt);
+  }
+};
+
+/// The pipeline of the paper's Fig. 1 on the triangulation behind `labels`
+/// (Mesh_labels.h): the vertices are classified once (`classify(view, options)`
+/// gives a `Vertex_classification` by view id), then each iteration runs a
+/// smoothing sweep (unless `moving_vertices` is NONE) and a topology pass (if
+/// `topology_optimization`). The flat view the sweeps use is re-read after a pass
+/// that changed cells. Every decision compares the minimum dihedral sine of the
+/// cells concerned, worst first, within the input's extreme angles, so the mesh
+/// never ends worse than it started. It stops after `max_iteration_number`
+/// iterations (0: `unlimited_iteration_cap`), at the time limit, at convergence
+/// (no vertex moved by more than `convergence` of its local size and no flip), or
+/// when an iteration changed nothing.
+template <class Labels, class Classify, class Visitor>
+Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const Smoothing_options& opt,
+                               Visitor&& visitor)
+{
+  CGAL::Real_timer timer;
+  timer.start();
+
+  Triangulation_view<Labels> view(labels);
+  auto& mesh = view.mesh();
+
+  Classification_options copt;
+  copt.move_boundary = opt.moving_vertices == Moving_vertices::ALL;
+  copt.preserve_features = opt.preserve_features;
+  copt.tensor_voting = opt.tensor_voting;
+  Vertex_classification cls = classify(view, copt);
+  if(opt.moving_vertices == Moving_vertices::NONE) std::fill(cls.kind.begin(), cls.kind.end(), Vertex_kind::fixed);
+
+  Smoothing_result result;
+  result.interior_vertices = cls.count(Vertex_kind::interior);
+  result.surface_vertices = cls.count(Vertex_kind::surface);
+  result.feature_vertices = cls.count(Vertex_kind::feature);
+  result.fixed_vertices = cls.count(Vertex_kind::fixed);
+  result.non_manifold_vertices = cls.non_manifold;
+  result.used_tensor_voting = cls.used_tensor_voting;
+  visitor.after_classification(result);
+
+  Dihedral_bounds bounds = Dihedral_bounds::empty();
+  for(std::size_t c = 0; c < mesh.cells.size(); ++c)
+    if(mesh.in_mesh[c])
+    {
+      const auto& q = mesh.cells[c];
+      bounds.include(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]);
+    }
+
+  Smoothing_sweep<typename Triangulation_view<Labels>::Kernel> sweep(mesh, cls, opt, bounds);
+  auto vertex_id = [&view](typename Labels::Vertex_handle v) { return view.index(v); };
+  std::vector<typename Labels::Vertex_handle> touched;
+  std::vector<int> changed;
+  Flip_history history;
+  std::vector<std::size_t> changed_at(mesh.number_of_vertices(), 0);   // per vertex: when it last moved or flipped
+
+  const std::size_t last = opt.max_iteration_number == 0 ? unlimited_iteration_cap : opt.max_iteration_number;
+  result.code = MAX_ITERATION_NUMBER_REACHED;
+  for(std::size_t it = 1; it <= last; ++it)
+  {
+    Iteration_stats stats;
+    stats.iteration = it;
+    if(opt.moving_vertices != Moving_vertices::NONE)
+    {
+      const double start = timer.time();
+      sweep.run(stats);
+      view.write_back();
+      ++history.clock;
+      for(int v : sweep.moved()) changed_at[v] = history.clock;
+      stats.sweep_seconds = timer.time() - start;
+    }
+    if(opt.topology_optimization)
+    {
+      history.pass = it;
+      history.region_stamp = changed_at;
+      for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+        for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
+          for(int u : mesh.incidences[k].face) history.region_stamp[v] = std::max(history.region_stamp[v], changed_at[u]);
+      touched.clear();
+      stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history);
+      if(stats.topology.total() > 0)
+      {
+        view.refresh();
+        changed.clear();
+        for(auto v : touched)
+          if(!labels.triangulation().is_infinite(v)) changed.push_back(view.index(v));
+        changed_at.resize(mesh.number_of_vertices(), history.clock);
+        for(int v : changed) changed_at[v] = history.clock;
+        sweep.refresh(changed);
+      }
+    }
+    result.topology += stats.topology;
+    stats.seconds = timer.time();
+    result.iterations = it;
+    visitor.after_iteration(stats);
+    const bool flipped = stats.topology.total() > 0;
+    if(stats.moved == 0 && !flipped) { result.code = CANT_IMPROVE_ANYMORE; break; }
+    if(opt.convergence > 0 && stats.max_relative_move < opt.convergence && !flipped)
+    {
+      result.code = CONVERGENCE_REACHED;
+      break;
+    }
+    if(opt.time_limit > 0 && timer.time() >= opt.time_limit) { result.code = TIME_LIMIT_REACHED; break; }
+  }
+  result.moved_vertices = sweep.moved_vertices();
+  result.seconds = timer.time();
+  return result;
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_OPTIMIZE_MESH_H
