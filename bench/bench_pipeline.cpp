@@ -8,7 +8,7 @@
 // the mean time of a smoothing sweep and of a flip pass per iteration, and the
 // largest relative change of a subdomain's volume.
 //
-//   bench_pipeline [--small] [--iterations N] [mesh files...]
+//   bench_pipeline [--small] [--iterations N] [--flip-threshold Q] [--flip-outside] [mesh files...]
 #include "inputs/generated_inputs.h"
 
 #include <CGAL/BODT_3/IO/mesh_io.h>
@@ -84,6 +84,8 @@ const Variant variants[] = {{"B-ODT, no flips", BODT::Moving_vertices::ALL, fals
                             {"flips alone", BODT::Moving_vertices::NONE, true},
                             {"B-ODT + flips", BODT::Moving_vertices::ALL, true}};
 
+BODT::Flip_options flip_options;
+
 template <class Mesh>
 void run(const std::string& label, const Mesh& input, std::size_t iterations)
 {
@@ -97,6 +99,7 @@ void run(const std::string& label, const Mesh& input, std::size_t iterations)
     opt.moving_vertices = v.moving;
     opt.topology_optimization = v.flips;
     opt.vertex_insertion = false;
+    opt.flips = flip_options;
     Totals t;
     const auto r = BODT::smooth(m, opt, t);
     row(label, v.name, before, BODT::mesh_quality(m), &r, &t);
@@ -114,6 +117,8 @@ int main(int argc, char** argv)
   {
     if(!std::strcmp(argv[i], "--small")) size = Size::small;
     else if(!std::strcmp(argv[i], "--iterations") && i + 1 < argc) iterations = std::stoul(argv[++i]);
+    else if(!std::strcmp(argv[i], "--flip-threshold") && i + 1 < argc) flip_options.quality_threshold = std::stod(argv[++i]);
+    else if(!std::strcmp(argv[i], "--flip-outside")) flip_options.flip_outside = true;
     else files.push_back(argv[i]);
   }
   header();

@@ -28,7 +28,7 @@ enum class Flip_kind : unsigned char
 
 /// A proposed connectivity change, ready for `replace_cells`: the cells it
 /// removes, those it creates, the facets it adds to the complex, and the quality
-/// (minimum dihedral sine) of the worst measured cell before and after.
+/// of the worst measured cell before and after.
 template <class Labels>
 struct Flip
 {
@@ -74,13 +74,15 @@ public:
   static constexpr double invalid = -1;
   static constexpr double unmeasured = std::numeric_limits<double>::infinity();
 
-  Flip_context(Labels& labels, const Dihedral_bounds& bounds, bool flip_outside)
-    : labels(labels), bounds(bounds), flip_outside(flip_outside)
+  Flip_context(Labels& labels, const Dihedral_bounds& bounds, bool flip_outside,
+               Quality_measure measure = Quality_measure::min_dihedral_sine)
+    : labels(labels), bounds(bounds), flip_outside(flip_outside), measure(measure)
   {}
 
   Labels& labels;
   Dihedral_bounds bounds;
   bool flip_outside;
+  Quality_measure measure;
 
   const Triangulation& triangulation() const { return labels.triangulation(); }
   bool is_infinite(Vertex_handle v) const { return labels.triangulation().is_infinite(v); }
@@ -109,17 +111,19 @@ public:
     const Bare_point p0 = point(v[0]), p1 = point(v[1]), p2 = point(v[2]), p3 = point(v[3]);
     if(kind != measured && kind != Region_kind::mesh)
       return CGAL::orientation(p0, p1, p2, p3) == CGAL::POSITIVE ? unmeasured : invalid;
-    const double q = min_dihedral_sine(p0, p1, p2, p3);
+    const double q = tet_quality(measure, p0, p1, p2, p3);
     if(!(q > 0) || (kind == measured && q <= floor)) return invalid;
     if(CGAL::orientation(p0, p1, p2, p3) != CGAL::POSITIVE) return invalid;
-    if(kind == Region_kind::mesh && !bounds.contains(p0, p1, p2, p3, q)) return invalid;
+    if(kind == Region_kind::mesh &&
+       !bounds.contains(p0, p1, p2, p3, measure == Quality_measure::min_dihedral_sine ? q : 0.0))
+      return invalid;
     return kind == measured ? q : unmeasured;
   }
 
-  /// The minimum dihedral sine of an existing finite cell.
+  /// The quality of an existing finite cell.
   double quality(Cell_handle c) const
   {
-    return min_dihedral_sine(point(c->vertex(0)), point(c->vertex(1)), point(c->vertex(2)), point(c->vertex(3)));
+    return tet_quality(measure, point(c->vertex(0)), point(c->vertex(1)), point(c->vertex(2)), point(c->vertex(3)));
   }
 
   /// Whether (a, b, c, d), a permutation of the vertices of `cell`, has the

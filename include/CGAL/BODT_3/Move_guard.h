@@ -23,7 +23,7 @@ namespace BODT_3 {
 /// convex, so the convex hull remains one.
 ///
 /// Quality (when `quality_guard` is on): the worst mesh cell of the star, by the
-/// measure of tet_quality.h (minimum dihedral sine), is not worse after the move,
+/// measure of tet_quality.h (minimum dihedral sine by default), is not worse after the move,
 /// and every mesh cell of the star stays within `bounds` (the input's extreme
 /// dihedral angles). Since a move only changes the cells of its star, the mesh's
 /// worst cell never gets worse, nor does either extreme angle.
@@ -47,8 +47,9 @@ public:
     worsens_quality
   };
 
-  Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard, const Dihedral_bounds& bounds)
-    : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds)
+  Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard, const Dihedral_bounds& bounds,
+             Quality_measure measure = Quality_measure::min_dihedral_sine)
+    : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds), measure_(measure)
   {
     refresh();
   }
@@ -61,7 +62,7 @@ public:
     for(std::size_t c = 0; c < mesh_.cells.size(); ++c)
     {
       const auto& q = mesh_.cells[c];
-      quality_[c] = min_dihedral_sine(mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]);
+      quality_[c] = tet_quality(measure_, mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]);
     }
   }
 
@@ -130,8 +131,10 @@ public:
       if(!m.in_mesh[c]) continue;
       const auto& f = m.incidences[k].face;
       const Point &a = m.points[f[0]], &b = m.points[f[1]], &d = m.points[f[2]];
-      const double q = min_dihedral_sine(p, a, b, d);
-      if(q < old_worst || !bounds_.contains(p, a, b, d, q)) return false;
+      const double q = tet_quality(measure_, p, a, b, d);
+      if(q < old_worst ||
+         !bounds_.contains(p, a, b, d, measure_ == Quality_measure::min_dihedral_sine ? q : 0.0))
+        return false;
       scratch_.push_back(q);
     }
     return true;
@@ -154,7 +157,8 @@ private:
   Smoothing_mesh<K>& mesh_;
   bool quality_guard_;
   Dihedral_bounds bounds_;
-  std::vector<double> quality_;   // per cell: minimum dihedral sine
+  Quality_measure measure_;
+  std::vector<double> quality_;   // per cell
   std::vector<double> scratch_;
   Refusal last_refusal_ = Refusal::worsens_quality;
   Refusal first_refusal_ = Refusal::worsens_quality;

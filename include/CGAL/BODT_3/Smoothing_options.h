@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_SMOOTHING_OPTIONS_H
 
 #include <CGAL/BODT_3/Tensor_voting.h>
+#include <CGAL/BODT_3/tet_quality.h>
 
 #include <CGAL/Mesh_optimization_return_code.h>
 
@@ -52,6 +53,8 @@ struct Smoothing_options
   /// flips) wherever they improve the worst tetrahedron they touch (paper, Fig. 1).
   bool topology_optimization = true;
   Flip_options flips;
+  /// What decides every change (tet_quality.h); the default is justified in doc/manual.md.
+  Quality_measure quality_measure = Quality_measure::min_dihedral_sine;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
   /// At most this many vertices are inserted; a negative value means 5% of the

@@ -70,10 +70,11 @@ struct Flip_history
   }
 };
 
-/// One topology pass: the cells below the quality threshold, worst first, each
-/// get the best of the edge removals of their six edges and the multi-face
-/// removals rooted at their four faces, if it raises the worst quality of the
-/// cells it replaces; new cells below the threshold are tried again. Every
+/// One topology pass: the cells whose minimum dihedral sine is below the quality
+/// threshold, worst first by `measure`, each get the best of the edge removals of
+/// their six edges and the multi-face removals rooted at their four faces, if it
+/// raises the worst quality (by `measure`) of the cells it replaces; new cells
+/// below the threshold are tried again. Every
 /// accepted flip strictly raises the worst cell of its region, so the pass ends.
 /// The order depends only on the mesh (ties are broken by `vertex_id`, stable ids
 /// of the vertices), so the same input gives the same output.
@@ -84,14 +85,15 @@ struct Flip_history
 template <class Labels, class Vertex_id>
 Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral_bounds& bounds,
                          const Vertex_id& vertex_id, std::vector<typename Labels::Vertex_handle>& touched,
-                         Flip_history* history = nullptr)
+                         Flip_history* history = nullptr,
+                         Quality_measure measure = Quality_measure::min_dihedral_sine)
 {
   using Vertex_handle = typename Labels::Vertex_handle;
   using Cell_handle = typename Labels::Cell_handle;
   CGAL::Real_timer timer;
   timer.start();
 
-  const Flip_context<Labels> ctx(labels, bounds, opt.flip_outside);
+  const Flip_context<Labels> ctx(labels, bounds, opt.flip_outside, measure);
   Edge_removal<Labels> edge_removal;
   edge_removal.max_ring = opt.max_ring;
   Multi_face_removal<Labels> face_removal;
@@ -113,7 +115,11 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
   auto push = [&](Cell_handle c) {
     if(!ctx.flippable(labels.region(c))) return;
     const double q = ctx.quality(c);
-    if(!(q < opt.quality_threshold)) return;
+    const double sine = measure == Quality_measure::min_dihedral_sine
+                            ? q
+                            : min_dihedral_sine(ctx.point(c->vertex(0)), ctx.point(c->vertex(1)),
+                                                ctx.point(c->vertex(2)), ctx.point(c->vertex(3)));
+    if(!(sine < opt.quality_threshold)) return;
     Entry e{q, {}, c, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
     for(int k = 0; k < 4; ++k) e.ids[k] = vertex_id(e.vertices[k]);
     std::sort(e.ids.begin(), e.ids.end());

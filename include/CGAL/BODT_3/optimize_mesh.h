@@ -105,7 +105,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
         for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
           for(int u : mesh.incidences[k].face) history.region_stamp[v] = std::max(history.region_stamp[v], changed_at[u]);
       touched.clear();
-      stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history);
+      stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure);
       if(stats.topology.total() > 0)
       {
         view.refresh();

@@ -3,6 +3,8 @@
 #ifndef CGAL_BODT_3_TET_QUALITY_H
 #define CGAL_BODT_3_TET_QUALITY_H
 
+#include <CGAL/BODT_3/dihedral_angles.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -51,6 +53,29 @@ double min_dihedral_sine(const Point& p0, const Point& p1, const Point& p2, cons
   const double s = std::min({l01 / (N2 * N3), l02 / (N1 * N3), l03 / (N1 * N2), l12 / (N0 * N3),
                              l13 / (N0 * N2), l23 / (N0 * N1)});
   return std::min(1.0, D * std::sqrt(s));
+}
+
+/// The measures the pipeline can decide with. The minimum dihedral sine is the
+/// default (doc/manual.md); the others exist so that the choice can be measured
+/// (bench/quality_measures.cpp): the smallest dihedral angle alone (what CGAL's
+/// perturber and exuder raise), and the radius ratio 3 r / R.
+enum class Quality_measure
+{
+  min_dihedral_sine,
+  min_dihedral_angle,
+  radius_ratio
+};
+
+/// The quality of a tetrahedron by `measure`: larger is better, -1 for a
+/// tetrahedron that is not positively oriented in floating point.
+template <class Point>
+double tet_quality(Quality_measure measure, const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  const double q = min_dihedral_sine(p0, p1, p2, p3);
+  if(measure == Quality_measure::min_dihedral_sine || q < 0) return q;
+  if(measure == Quality_measure::radius_ratio) return radius_ratio(p0, p1, p2, p3);
+  const auto a = dihedral_angles(p0, p1, p2, p3);
+  return *std::min_element(a.begin(), a.end());
 }
 
 /// The extreme dihedral angles a mesh may reach, as cosines: every angle t must
