@@ -22,7 +22,9 @@ enum class Moving_vertices
 
 struct Smoothing_options
 {
-  std::size_t max_iteration_number = 20;   // the paper's 20 sweeps; 0 means no limit
+  /// The paper's 20 sweeps. 0: until a sweep changes nothing or `convergence` is
+  /// reached, at most 1000 sweeps (CGAL's optimizers cap 0 the same way).
+  std::size_t max_iteration_number = 20;
   double time_limit = 0;                   // seconds; 0 means no limit
   /// Stop when no vertex moved by more than this fraction of its local size
   /// (cube root of the mean volume of its cells) in a sweep; 0 disables the test.

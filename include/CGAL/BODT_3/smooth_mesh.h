@@ -76,7 +76,7 @@ Smoothing_result smooth_mesh(Smoothing_mesh<K>& mesh, const Feature_hints& hints
   std::vector<char> moved_once(mesh.number_of_vertices(), 0);
   result.code = MAX_ITERATION_NUMBER_REACHED;
 
-  for(std::size_t it = 1; opt.max_iteration_number == 0 || it <= opt.max_iteration_number; ++it)
+  for(std::size_t it = 1; it <= (opt.max_iteration_number == 0 ? 1000 : opt.max_iteration_number); ++it)   // 0: CGAL's cap
   {
     Iteration_stats stats;
     stats.iteration = it;
