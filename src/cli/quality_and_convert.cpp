@@ -60,8 +60,8 @@ struct Convert_options
 
 int run_convert(const Convert_options& o)
 {
-  const Output_format format = choose_output_format(o.output, o.format);
   check_output_paths(o.input, {{"OUT", o.output}});
+  const Output_format format = choose_output_format(o.output, o.format);
   write_output(o.output, IO::read_mesh(o.input), format);
   return 0;
 }
