@@ -125,6 +125,12 @@ TEST(Cli, FailedRunWritesNothing)
       << out;
   EXPECT_NE(out.find("broken.mesh"), std::string::npos) << out;
   for(const char* f : {"out.mesh", "r.json", "r.html"}) EXPECT_FALSE(fs::exists(dir / f)) << f;
+  // A folder as input is named in the message.
+  fs::create_directories(dir / "folder.mesh");
+  EXPECT_EQ(run_bodt("smooth " + q(dir / "folder.mesh") + " -o " + q(dir / "out.mesh"), out, dir), 1);
+  EXPECT_NE(out.find("folder.mesh: is a folder"), std::string::npos) << out;
+  EXPECT_EQ(run_bodt("quality " + q(dir / "folder.mesh"), out, dir), 1);
+  EXPECT_NE(out.find("folder.mesh: is a folder"), std::string::npos) << out;
 }
 
 // Paths with a quote and a backslash give valid JSON, which holds everything the

@@ -78,6 +78,12 @@ fs::path identity(const std::string& path)
 
 } // namespace
 
+void check_input_path(const std::string& input)
+{
+  std::error_code ec;
+  if(fs::is_directory(input, ec)) throw CGAL::BODT_3::Mesh_io_error(input, 0, "is a folder, not a mesh file");
+}
+
 void check_output_paths(const std::string& input, const std::vector<std::pair<std::string, std::string>>& outputs)
 {
   std::vector<std::pair<std::string, fs::path>> seen;

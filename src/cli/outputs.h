@@ -32,6 +32,10 @@ Output_format choose_output_format(const std::string& path, const std::string& f
 /// Writes the mesh in `format`, atomically (temporary file, then rename).
 void write_output(const std::string& path, const CGAL::BODT_3::Tet_mesh& mesh, const Output_format& format);
 
+/// Refuses an input that is a folder (the readers would fail without saying which
+/// file), with a `Mesh_io_error` naming it.
+void check_input_path(const std::string& input);
+
 /// Refuses, with `Usage_error` and before any work, output paths that cannot work:
 /// a missing or unwritable folder, a folder given as a file, a file that is not
 /// writable, an output that is the input, two outputs that are the same file.

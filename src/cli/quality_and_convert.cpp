@@ -42,6 +42,7 @@ struct Quality_options
 
 int run_quality(const Quality_options& o)
 {
+  check_input_path(o.input);
   std::ostringstream warnings;
   const BODT::Tet_mesh mesh = IO::read_mesh(o.input, warnings);
   print_warnings_of_reading_only(warnings.str());
@@ -60,6 +61,7 @@ struct Convert_options
 
 int run_convert(const Convert_options& o)
 {
+  check_input_path(o.input);
   check_output_paths(o.input, {{"OUT", o.output}});
   const Output_format format = choose_output_format(o.output, o.format);
   write_output(o.output, IO::read_mesh(o.input), format);

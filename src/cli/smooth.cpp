@@ -82,6 +82,7 @@ int run_smooth(Smooth_options o)
     throw Usage_error("--method flips with --no-flips would change nothing");
 
   // Everything that can be refused is refused before the work starts.
+  check_input_path(o.input);
   check_output_paths(o.input, {{"-o", o.output}, {"--report", o.report}, {"--html", o.html}});
   const Output_format format = choose_output_format(o.output, o.format);
 

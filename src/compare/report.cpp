@@ -319,23 +319,6 @@ std::string paper_section(const Comparison& c)
   return out + "\n" + sentences;
 }
 
-std::string json_number(double x)
-{
-  return std::isfinite(x) ? format("%.10g", x) : std::string("null");
-}
-
-std::string json_string(const std::string& s)
-{
-  std::string out = "\"";
-  for(char ch : s)
-  {
-    if(ch == '"' || ch == '\\') out += '\\';
-    if(static_cast<unsigned char>(ch) < 0x20) { out += format("\\u%04x", ch); continue; }
-    out += ch;
-  }
-  return out + "\"";
-}
-
 } // namespace
 
 std::string file_stem(const std::string& name)
@@ -496,43 +479,43 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
 
 std::string json(const Comparison& c, const std::vector<Method>& table)
 {
-  std::ostringstream js;
-  js << "{\n  \"command\": " << json_string(c.command) << ",\n  \"machine\": {\"cpu\": " << json_string(c.machine.cpu)
-     << ", \"cores\": " << c.machine.cores << ", \"compiler\": " << json_string(c.machine.compiler)
-     << ", \"cgal\": " << json_string(c.machine.cgal) << ", \"date\": " << json_string(c.machine.date) << "},\n"
-     << "  \"size\": " << json_string(c.size) << ",\n  \"iterations\": " << c.iterations << ",\n  \"methods\": [";
-  for(std::size_t i = 0; i < table.size(); ++i)
-    js << (i ? "," : "") << "\n    {\"name\": " << json_string(table[i].name) << ", \"applies_to\": "
-       << json_string(table[i].applies_to == Applies_to::every_mesh ? "every_mesh" : "mesh_3_output")
-       << ", \"settings\": " << json_string(table[i].settings) << "}";
-  js << "\n  ],\n  \"notes\": [";
-  for(std::size_t i = 0; i < c.notes.size(); ++i) js << (i ? ", " : "") << json_string(c.notes[i]);
-  js << "],\n  \"inputs\": [";
-  for(std::size_t i = 0; i < c.inputs.size(); ++i)
+  nlohmann::json j;
+  j["command"] = c.command;
+  j["machine"] = {{"cpu", c.machine.cpu},
+                  {"cores", c.machine.cores},
+                  {"compiler", c.machine.compiler},
+                  {"cgal", c.machine.cgal},
+                  {"date", c.machine.date}};
+  j["benchmark"] = c.benchmark;
+  j["size"] = c.size;
+  j["iterations"] = c.iterations;
+  j["methods"] = nlohmann::json::array();
+  for(const Method& m : table)
+    j["methods"].push_back({{"name", m.name},
+                            {"applies_to", m.applies_to == Applies_to::every_mesh ? "every_mesh" : "mesh_3_output"},
+                            {"settings", m.settings}});
+  j["notes"] = c.notes;
+  j["inputs"] = nlohmann::json::array();
+  for(const Input_result& r : c.inputs)
   {
-    const Input_result& r = c.inputs[i];
-    js << (i ? "," : "") << "\n    {\"name\": " << json_string(r.name) << ", \"origin\": " << json_string(r.origin)
-       << ",\n     \"before\": " << BODT::to_json(r.before) << ",\n     \"results\": [";
-    bool first = true;
+    nlohmann::json input = {{"name", r.name}, {"origin", r.origin}, {"before", r.before}};
+    input["results"] = nlohmann::json::array();
     for(const Measurement& row : r.rows)
-    {
-      if(!row.applied) continue;
-      js << (first ? "" : ",") << "\n      {\"method\": " << json_string(row.method)
-         << ", \"iterations\": " << row.run.iterations << ", \"outcome\": " << json_string(row.run.outcome)
-         << ", \"cpu_seconds\": " << json_number(row.cpu_seconds)
-         << ", \"wall_seconds\": " << json_number(row.wall_seconds)
-         << ", \"seconds_per_iteration\": " << json_number(row.seconds_per_iteration())
-         << ", \"throughput_tets_iterations_per_second\": " << json_number(row.throughput())
-         << ", \"vertices_added\": " << row.vertices_added
-         << ", \"relative_volume_change\": " << json_number(row.relative_volume_change)
-         << ", \"relative_hausdorff_distance\": " << json_number(row.relative_hausdorff)
-         << ",\n       \"quality\": " << BODT::to_json(row.quality) << "}";
-      first = false;
-    }
-    js << "]}";
+      if(row.applied)
+        input["results"].push_back({{"method", row.method},
+                                    {"iterations", row.run.iterations},
+                                    {"outcome", row.run.outcome},
+                                    {"cpu_seconds", row.cpu_seconds},
+                                    {"wall_seconds", row.wall_seconds},
+                                    {"seconds_per_iteration", row.seconds_per_iteration()},
+                                    {"throughput_tets_iterations_per_second", row.throughput()},
+                                    {"vertices_added", row.vertices_added},
+                                    {"relative_volume_change", row.relative_volume_change},
+                                    {"relative_hausdorff_distance", row.relative_hausdorff},
+                                    {"quality", row.quality}});
+    j["inputs"].push_back(input);
   }
-  js << "\n  ]\n}\n";
-  return js.str();
+  return j.dump(1) + "\n";
 }
 
 std::string input_histogram_svg(const Input_result& r, const std::vector<Method>& table)
