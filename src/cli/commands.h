@@ -7,21 +7,16 @@
 // and runs from the values parsed; main() only dispatches and turns exceptions
 // into exit statuses (0 success, 1 bad input or failed run, 2 wrong usage).
 
+#include "cli/usage_error.h"
+
 #include <CLI/CLI.hpp>
 
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace bodt_cli {
-
-/// Wrong command-line usage found after parsing (e.g. an unusable output path): exit status 2.
-struct Usage_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
 
 /// Declares a subcommand's options on `command`; the function returned runs it
 /// with the values parsed and returns the exit status.

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/outputs.h"
 
-#include "cli/commands.h"
+#include "cli/usage_error.h"
 
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
