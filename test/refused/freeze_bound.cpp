@@ -1,4 +1,4 @@
-// Must not compile: B-ODT has no freeze_bound (test parameters_refused_freeze_bound).
+// Must not compile: B-ODT freezes no vertex (test parameters_refused_freeze_bound).
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/bodt_optimize_mesh_3.h>

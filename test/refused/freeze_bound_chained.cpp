@@ -1,4 +1,4 @@
-// Must not compile: B-ODT has no freeze_bound, in CGAL 6's style either.
+// Must not compile: B-ODT freezes no vertex, in the CGAL 6 style either.
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
