@@ -145,6 +145,11 @@ TEST(Parameters, DomainOfOdtSignatureIsAccepted)
   CGAL::bodt_optimize_mesh_3(c, domain, params::max_iteration_number(2).progress_visitor(
                                              Counting_visitor{&classifications, &iterations}));
   EXPECT_EQ(iterations, 2);
+  // CGAL 6's way of saying "no parameter".
+  Delaunay d = random_ball(), e = random_ball();
+  CGAL::bodt_optimize_mesh_3(d, domain, params::default_values());
+  CGAL::bodt_optimize_mesh_3(e);
+  EXPECT_EQ(points_of(d), points_of(e));
 }
 
 TEST(Parameters, ReturnCodePrintsByName)

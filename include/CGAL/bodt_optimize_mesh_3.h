@@ -53,18 +53,6 @@ void apply_parameter(Smoothing_options& options, const Arg& arg)
 }
 
 template <class Arg>
-auto visitor_of(const Arg& arg)
-{
-  if constexpr(Is_chain<Arg>::value)
-    return arg.visitor();
-  else if constexpr(Is_boost_argument<Arg>::value &&
-                    std::is_same<typename Arg::key_type, tag::progress_visitor_>::value)
-    return arg.get_value();
-  else
-    return Null_smoothing_visitor();
-}
-
-template <class Arg>
 constexpr bool has_visitor()
 {
   if constexpr(Is_chain<Arg>::value)
@@ -73,6 +61,20 @@ constexpr bool has_visitor()
     return std::is_same<typename Arg::key_type, tag::progress_visitor_>::value;
   else
     return false;
+}
+
+template <class Arg>
+auto visitor_of(const Arg& arg)
+{
+  if constexpr(has_visitor<Arg>())
+  {
+    if constexpr(Is_chain<Arg>::value)
+      return arg.visitor();
+    else
+      return arg.get_value();
+  }
+  else
+    return Null_smoothing_visitor();
 }
 
 // The visitor among the parameters (the last one given), or one that does nothing.
