@@ -2,8 +2,10 @@
 //
 // The one line that matters is the call to CGAL::bodt_optimize_mesh_3: it takes
 // the Mesh_complex_3_in_triangulation_3 that make_mesh_3 returns, like
-// CGAL::odt_optimize_mesh_3 does, but needs no domain, moves boundary and
-// feature vertices too, and keeps the volume of every subdomain.
+// CGAL::odt_optimize_mesh_3 does (the domain may be given or left out: B-ODT does
+// not use it), moves boundary and feature vertices too, and keeps the volume of
+// every subdomain. The parameters are in CGAL 6's chained style here;
+// examples/smooth_delaunay.cpp uses CGAL 5.5's `parameters::x = v` style.
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
@@ -38,10 +40,10 @@ int main()
 
   const auto before = CGAL::BODT_3::mesh_quality(c3t3);
   const CGAL::Mesh_optimization_return_code code =
-      CGAL::bodt_optimize_mesh_3(c3t3, params::max_iteration_number = 20);
+      CGAL::bodt_optimize_mesh_3(c3t3, domain, params::max_iteration_number(20).time_limit(60));
   const auto after = CGAL::BODT_3::mesh_quality(c3t3);
 
-  std::cout << "return code " << code << "\n"
+  std::cout << "return code " << code << "\n"   // printed by name, e.g. MAX_ITERATION_NUMBER_REACHED
             << "min dihedral angle: " << before.min_dihedral_deg << " -> " << after.min_dihedral_deg << " deg\n"
             << "max dihedral angle: " << before.max_dihedral_deg << " -> " << after.max_dihedral_deg << " deg\n"
             << "volume: " << before.volume << " -> " << after.volume << "\n";

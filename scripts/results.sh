@@ -7,7 +7,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 
-bash "$here/scripts/setup.sh" compare
+bash "$here/scripts/setup.sh" bodt-compare
 # Relative paths, so that the command recorded in doc/results.md is the same on every machine.
 cd "$here"
-build/bench/compare --output-dir doc "$@"
+build/bodt-compare --output-dir doc "$@"

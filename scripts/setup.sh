@@ -5,7 +5,8 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(build-essential cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev
-          libgmp-dev libmpfr-dev libtbb-dev libgtest-dev googletest zlib1g-dev chromium)
+          libgmp-dev libmpfr-dev libtbb-dev libgtest-dev googletest zlib1g-dev chromium
+          libcli11-dev nlohmann-json3-dev pybind11-dev python3-dev python3-numpy python3-meshio)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -32,7 +33,9 @@ fi
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
+# Debian's Python, for which python3-numpy and python3-meshio are installed (not another one on PATH).
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
+      "${launcher[@]}" >/dev/null
 if [ $# -gt 0 ]; then
   cmake --build "$here/build" -j2 --target "$@"
 else

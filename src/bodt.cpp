@@ -1,68 +1,65 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// bodt: the command-line tool. Each subcommand is a function taking its own
-// arguments; main() only dispatches and turns exceptions into exit statuses
-// (0 success, 1 bad input or failed run, 2 wrong usage).
+// bodt: the command-line tool. `bodt compare` is a program of its own,
+// bodt-compare, installed beside bodt: it instantiates CGAL's Mesh_3 and its
+// optimizers, which `smooth` never needs, and would make bodt slow to build.
 
 #include "cli/commands.h"
 
+#include <cerrno>
 #include <cstring>
-#include <exception>
+#include <filesystem>
 #include <iostream>
-#include <new>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
 
-const char* const usage =
-    "usage: bodt <command> [options]\n"
-    "\n"
-    "Tetrahedral mesh smoothing by boundary-optimized Delaunay triangulation (B-ODT).\n"
-    "\n"
-    "commands:\n"
-    "  quality MESH [--json]   dihedral angles, volume and validity of a mesh\n"
-    "  convert IN OUT          convert between .mesh (Medit), .msh (Gmsh) and .vtu (VTK)\n"
-    "  smooth IN -o OUT        improve a mesh by B-ODT smoothing\n"
-    "  compare [MESH...]       B-ODT beside ODT and CGAL's optimizers: tables and histograms\n"
-    "\n"
-    "'bodt <command> --help' describes a command.\n";
+// Replaces this process by bodt-compare from bodt's own folder; returns only on failure.
+int exec_compare(int argc, char** argv)
+{
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path compare = (ec ? std::filesystem::path(argv[0]) : self).parent_path() / "bodt-compare";
+  std::vector<char*> args;
+  std::string name = "bodt compare";
+  args.push_back(name.data());
+  for(int i = 2; i < argc; ++i) args.push_back(argv[i]);
+  args.push_back(nullptr);
+  ::execv(compare.c_str(), args.data());
+  std::cerr << "bodt compare: error: cannot run " << compare.string() << ": " << std::strerror(errno)
+            << "\n(bodt compare is the program bodt-compare; build it with 'cmake --build build --target "
+               "bodt-compare')\n";
+  return 1;
+}
 
 } // namespace
 
 int main(int argc, char** argv)
 {
-  if(argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
-     !std::strcmp(argv[1], "help"))
+  if(argc >= 2 && std::string(argv[1]) == "compare") return exec_compare(argc, argv);
+
+  CLI::App app("Tetrahedral mesh smoothing by boundary-optimized Delaunay triangulation (B-ODT).", "bodt");
+  app.set_version_flag("--version", bodt_cli::version_text());
+  app.require_subcommand(0, 1);
+  app.footer("'bodt <command> --help' describes a command.");
+  std::vector<std::pair<CLI::App*, bodt_cli::Command>> commands;
+  auto add = [&](const char* name, const char* what, auto declare) {
+    CLI::App* command = app.add_subcommand(name, what);
+    commands.emplace_back(command, declare(*command));
+  };
+  add("quality", "dihedral angles, volume and validity of a mesh", bodt_cli::add_quality);
+  add("convert", "convert between .mesh (Medit), .msh (Gmsh) and .vtu (VTK)", bodt_cli::add_convert);
+  add("smooth", "improve a mesh by B-ODT smoothing, flips and vertex insertion", bodt_cli::add_smooth);
+  // Listed for the help only: main() hands `compare` to bodt-compare before parsing.
+  app.add_subcommand("compare", "B-ODT beside ODT and CGAL's optimizers (the program bodt-compare)")
+      ->prefix_command();
+  if(argc < 2)
   {
-    (argc < 2 ? std::cerr : std::cout) << usage;
-    return argc < 2 ? 2 : 0;
-  }
-  const std::string command = argv[1];
-  const std::vector<std::string> args(argv + 2, argv + argc);
-  try
-  {
-    if(command == "quality") return bodt_cli::quality(args);
-    if(command == "convert") return bodt_cli::convert(args);
-    if(command == "smooth") return bodt_cli::smooth(args);
-    if(command == "compare") return bodt_cli::compare(args);
-    std::cerr << "bodt: unknown command '" << command << "'\n\n" << usage;
+    std::cerr << app.help();
     return 2;
   }
-  catch(const bodt_cli::Usage_error& e)
-  {
-    std::cerr << "bodt " << command << ": " << e.what() << "\n(see 'bodt " << command << " --help')\n";
-    return 2;
-  }
-  catch(const std::bad_alloc&)
-  {
-    std::cerr << "bodt " << command << ": error: out of memory\n";
-    return 1;
-  }
-  catch(const std::exception& e)
-  {
-    std::cerr << "bodt " << command << ": error: " << e.what() << "\n";
-    return 1;
-  }
+  return bodt_cli::run(app, argc, argv, commands);
 }

@@ -6,6 +6,7 @@
 #include "compare/compare.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -85,6 +86,7 @@ TEST_F(Compare_test, ReportsNameEveryMethod)
   c.inputs.push_back(*result_);
   const std::string md = markdown(c, methods(), "results");
   const std::string js = json(c, methods());
+  EXPECT_EQ(nlohmann::json::parse(js).at("inputs").size(), 1u);
   for(const Method& m : methods())
   {
     EXPECT_NE(md.find("| " + m.name + " |"), std::string::npos) << m.name;

@@ -1,7 +1,8 @@
 // `bodt smooth --html`: the page is self-contained, its table shows the quality
-// of the input and output meshes, and a headless Chromium renders it with both
-// histograms visible: grey bars (before) and blue bars (after) in two separate
-// figures of the screenshot.
+// of the input and output meshes and the volume of every subdomain, and a
+// headless Chromium renders it with both histograms overlaid on one axis: grey
+// bars (before) and blue bars (after) over the same degrees, and a single sliver
+// below 10 degrees visible as a bar.
 #include <CGAL/BODT_3/IO/html_report.h>
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
@@ -271,7 +272,7 @@ TEST(SmoothHtml, HelpDocumentsTheOption)
   EXPECT_NE(output.find("--html"), std::string::npos) << output;
 }
 
-TEST(SmoothHtml, PageIsSelfContainedWithTableAndTwoHistograms)
+TEST(SmoothHtml, PageIsSelfContainedWithTablesAndOneHistogram)
 {
   const fs::path dir = tmp_dir("page");
   const Smoothing_run run = smooth_with_html(dir);
@@ -281,8 +282,9 @@ TEST(SmoothHtml, PageIsSelfContainedWithTableAndTwoHistograms)
 
   for(const char* external : {"http://", "https://", "<script", "<link", "<img", "<iframe", "src=", "@import", "url("})
     EXPECT_EQ(html.find(external), std::string::npos) << "the page refers to something outside it: " << external;
-  EXPECT_EQ(occurrences(html, "<svg"), 2u);
-  EXPECT_EQ(occurrences(html, "<figcaption>"), 2u);
+  EXPECT_EQ(occurrences(html, "<svg"), 1u) << "before and after belong on one axis";
+  EXPECT_EQ(occurrences(html, "<figcaption>"), 1u);
+  EXPECT_NE(html.find("log scale"), std::string::npos);
   EXPECT_NE(html.find(std::string("fill=\"") + BODT::report_before_colour + "\""), std::string::npos);
   EXPECT_NE(html.find(std::string("fill=\"") + BODT::report_after_colour + "\""), std::string::npos);
   EXPECT_NE(html.find("dihedral angle (degrees)"), std::string::npos);
@@ -310,21 +312,30 @@ TEST(SmoothHtml, PageIsSelfContainedWithTableAndTwoHistograms)
   expect_row("min radius ratio", format("%.4f", before.min_radius_ratio), format("%.4f", after.min_radius_ratio));
   expect_row("volume", format("%.10g", before.volume), format("%.10g", after.volume));
   expect_row("inverted or flat tets", "0", "0");
+  expect_row("bad tets in the interior", std::to_string(before.bad_tets_interior),
+             std::to_string(after.bad_tets_interior));
+  expect_row("bad tets with all vertices on the boundary", std::to_string(before.bad_tets_all_vertices_on_boundary),
+             std::to_string(after.bad_tets_all_vertices_on_boundary));
+  // The tails are counted in the page, and every subdomain's volume is shown.
+  EXPECT_NE(html.find("below 10&deg;: " + std::to_string(before.tets_below_small) + " before, " +
+                      std::to_string(after.tets_below_small) + " after"),
+            std::string::npos);
+  for(const auto& kv : before.volume_per_subdomain)
+    EXPECT_EQ(row_cells(html, std::to_string(kv.first)).size(), 3u) << "subdomain " << kv.first;
   for(const char* item : {"method:</b> bodt", "iterations:", "time:", "moved vertices:", "relative volume change:"})
     EXPECT_NE(html.find(item), std::string::npos) << item;
 }
 
-TEST(SmoothHtml, ChromiumScreenshotShowsBothHistograms)
+namespace {
+
+// A headless Chromium screenshot of `page`, 1280x1600, decoded.
+Image screenshot(const fs::path& page, const fs::path& dir)
 {
   if(std::system("command -v chromium > /dev/null 2>&1") != 0)
-    FAIL() << "chromium is not installed; run scripts/setup.sh, which installs it";
-  const fs::path dir = tmp_dir("screenshot");
-  const Smoothing_run run = smooth_with_html(dir);
-  ASSERT_EQ(run.status, 0) << run.bodt_output;
-
+    throw std::runtime_error("chromium is not installed; run scripts/setup.sh, which installs it");
   // A fresh profile, so no state of an earlier run or another user is involved.
   std::string profile_template = (fs::temp_directory_path() / "bodt_chromium_XXXXXX").string();
-  ASSERT_NE(::mkdtemp(profile_template.data()), nullptr);
+  if(::mkdtemp(profile_template.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
   const fs::path profile = profile_template;
   const fs::path png = dir / "screenshot.png";
   const fs::path log = dir / "chromium_output.txt";
@@ -332,20 +343,43 @@ TEST(SmoothHtml, ChromiumScreenshotShowsBothHistograms)
   const std::string cmd = "timeout 300 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
                           "--disable-background-networking --disable-component-update --disable-sync "
                           "--user-data-dir=" + shell_quoted(profile) + " --window-size=1280,1600 --screenshot=" +
-                          shell_quoted(png) + " " + shell_quoted("file://" + run.page.string()) + " > " + shell_quoted(log) + " 2>&1";
+                          shell_quoted(png) + " " + shell_quoted("file://" + page.string()) + " > " + shell_quoted(log) + " 2>&1";
   const int raw = std::system(cmd.c_str());
   const int status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
   std::error_code ignored;
   fs::remove_all(profile, ignored);
-  ASSERT_EQ(status, 0) << "chromium failed:\n" << read_text(log);
-  ASSERT_TRUE(fs::exists(png)) << "chromium wrote no screenshot:\n" << read_text(log);
+  if(status != 0 || !fs::exists(png)) throw std::runtime_error("chromium wrote no screenshot:\n" + read_text(log));
+  return decode_png(png.string());
+}
 
-  const Image img = decode_png(png.string());
+const std::array<int, 3> grey_rgb = {0x8c, 0x8c, 0x8c};
+const std::array<int, 3> blue_rgb = {0x1f, 0x77, 0xb4};
+const std::array<int, 3> tail_rgb = {0xfb, 0xe3, 0xe3};
+
+// Solid pixels of `colour` whose x lies in [left, right].
+std::size_t solid_pixels_between(const Image& img, const std::array<int, 3>& colour, int left, int right)
+{
+  Image strip = img;
+  for(int y = 0; y < img.height; ++y)
+    for(int x = 0; x < img.width; ++x)
+      if(x < left || x > right) std::fill_n(&strip.rgb[3 * (static_cast<std::size_t>(y) * img.width + x)], 3, 255);
+  return solid_area(strip, colour).pixels;
+}
+
+} // namespace
+
+TEST(SmoothHtml, ChromiumScreenshotShowsBothHistogramsOnOneAxis)
+{
+  const fs::path dir = tmp_dir("screenshot");
+  const Smoothing_run run = smooth_with_html(dir);
+  ASSERT_EQ(run.status, 0) << run.bodt_output;
+  const Image img = screenshot(run.page, dir);
   EXPECT_EQ(img.width, 1280);
   EXPECT_EQ(img.height, 1600);
-  const Colour_area grey = solid_area(img, {0x8c, 0x8c, 0x8c});
-  const Colour_area blue = solid_area(img, {0x1f, 0x77, 0xb4});
-  SCOPED_TRACE("before (grey): " + describe(grey) + "; after (blue): " + describe(blue) + "; " + png.string());
+  const Colour_area grey = solid_area(img, grey_rgb);
+  const Colour_area blue = solid_area(img, blue_rgb);
+  SCOPED_TRACE("before (grey): " + describe(grey) + "; after (blue): " + describe(blue) + "; " +
+               (dir / "screenshot.png").string());
   EXPECT_GT(grey.pixels, 500u);
   EXPECT_GT(blue.pixels, 500u);
   // Each colour spans a histogram, not just a legend swatch ...
@@ -353,6 +387,52 @@ TEST(SmoothHtml, ChromiumScreenshotShowsBothHistograms)
   EXPECT_GT(grey.bottom - grey.top, 50);
   EXPECT_GT(blue.right - blue.left, 100);
   EXPECT_GT(blue.bottom - blue.top, 50);
-  // ... and the two lie in separate figures, before to the left of or above after.
-  EXPECT_TRUE(grey.right < blue.left || grey.bottom < blue.top);
+  // ... and both lie over the same degrees and stand on the same baseline: one axis.
+  EXPECT_LT(grey.left, blue.right);
+  EXPECT_LT(blue.left, grey.right);
+  EXPECT_LE(std::abs(grey.bottom - blue.bottom), 3);
+}
+
+// One sliver among hundreds of good tetrahedra shows as a bar in the shaded tail
+// below 10 degrees, where the input had none.
+TEST(SmoothHtml, ChromiumScreenshotShowsASingleSliver)
+{
+  const fs::path dir = tmp_dir("sliver");
+  Tet_mesh good = jittered_grid();
+  const BODT::Quality_report before = BODT::mesh_quality(good);
+  ASSERT_EQ(before.tets_below_small, 0u);
+  Tet_mesh with_sliver = good;
+  const int base = static_cast<int>(with_sliver.points.size());
+  for(const Point& p : {Point(10, 0, 0), Point(11, 0, 0), Point(10, 1, 0), Point(10.4, 0.4, 0.03)})
+  {
+    with_sliver.points.push_back(p);
+    with_sliver.vertex_refs.push_back(0);
+  }
+  with_sliver.tets.push_back({base, base + 1, base + 2, base + 3});
+  with_sliver.tet_labels.push_back(1);
+  const BODT::Quality_report after = BODT::mesh_quality(with_sliver);
+  ASSERT_EQ(after.inverted_tets, 0u);
+  ASSERT_EQ(after.tets_below_small, 1u);
+  const fs::path page = dir / "sliver.html";
+  std::ofstream(page) << BODT::html_report("one sliver", before, after, {});
+  const Image img = screenshot(page, dir);
+
+  const Colour_area tail = solid_area(img, tail_rgb);   // both shaded tails
+  SCOPED_TRACE("tails: " + describe(tail) + "; " + (dir / "screenshot.png").string());
+  ASSERT_GT(tail.pixels, 1000u);
+  // The left tail: the shaded run of pixels that starts at the tails' left edge,
+  // on a row near the top of the plot, where no bar of a tail reaches.
+  auto is_tail = [&](int x, int y) {
+    const std::uint8_t* p = img.at(x, y);
+    for(int c = 0; c < 3; ++c)
+      if(std::abs(int(p[c]) - tail_rgb[c]) > 2) return false;
+    return true;
+  };
+  int left_tail_right = tail.left;
+  while(left_tail_right + 1 < img.width && is_tail(left_tail_right + 1, tail.top + 2)) ++left_tail_right;
+  ASSERT_GT(left_tail_right - tail.left, 20) << "the tail below 10 degrees is too narrow to read";
+  EXPECT_GT(solid_pixels_between(img, blue_rgb, tail.left, left_tail_right), 25u)
+      << "the single sliver does not show below 10 degrees";
+  EXPECT_EQ(solid_pixels_between(img, grey_rgb, tail.left, left_tail_right), 0u)
+      << "the input had no angle below 10 degrees";
 }

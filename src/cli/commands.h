@@ -3,39 +3,38 @@
 #ifndef BODT_CLI_COMMANDS_H
 #define BODT_CLI_COMMANDS_H
 
-#include <stdexcept>
+// The subcommands of `bodt`. Each one declares its options on a CLI11 (sub)command
+// and runs from the values parsed; main() only dispatches and turns exceptions
+// into exit statuses (0 success, 1 bad input or failed run, 2 wrong usage).
+
+#include "cli/usage_error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bodt_cli {
 
-/// Wrong command-line usage: exit status 2.
-struct Usage_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+/// Declares a subcommand's options on `command`; the function returned runs it
+/// with the values parsed and returns the exit status.
+using Command = std::function<int()>;
 
-/// Command-line arguments of one subcommand: flags, options with a value, and
-/// positional arguments, with errors for anything unknown or missing.
-class Arguments
-{
-public:
-  explicit Arguments(const std::vector<std::string>& args) : args_(args), used_(args.size(), false) {}
+Command add_quality(CLI::App& command);
+Command add_convert(CLI::App& command);
+Command add_smooth(CLI::App& command);
+/// `command_line` is the command as invoked, which the results record.
+Command add_compare(CLI::App& command, const std::string& command_line);
 
-  bool flag(const std::string& name);
-  bool option(const std::string& name, std::string& value);
-  std::vector<std::string> positionals();   // call last: rejects unknown options
+/// "bodt 0.1.0 (CGAL 5.5.1)".
+std::string version_text();
 
-private:
-  std::vector<std::string> args_;
-  std::vector<bool> used_;
-};
-
-int quality(const std::vector<std::string>& args);
-int convert(const std::vector<std::string>& args);
-int smooth(const std::vector<std::string>& args);
-/// `program` is how the command was invoked, for the header of the results.
-int compare(const std::vector<std::string>& args, const std::string& program = "bodt compare");
+/// Runs `app` on the command line: parses it, runs the command chosen, and turns
+/// errors into messages on stderr and exit statuses. `commands` maps each
+/// subcommand (or `app` itself, for a program with no subcommands) to what runs it.
+int run(CLI::App& app, int argc, char** argv, const std::vector<std::pair<CLI::App*, Command>>& commands);
 
 } // namespace bodt_cli
 

@@ -6,70 +6,36 @@
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <set>
 
 namespace bodt_cli {
 
 namespace {
 
-const char* const compare_help =
-    "usage: bodt compare [options] [MESH...]   (or bench/compare [options] [MESH...])\n\n"
-    "Runs every smoothing method side by side and measures the results: the input,\n"
-    "interior-only ODT, B-ODT basic (Algorithm 2) and advanced (Algorithm 3, the\n"
-    "default), and on Mesh_3 outputs CGAL's odt_optimize_mesh_3, lloyd_optimize_mesh_3,\n"
-    "perturb_mesh_3 + exude_mesh_3 and tetrahedral_isotropic_remeshing. Inputs: the\n"
-    "generated Mesh_3 meshes and the random sphere, CGAL's data surfaces found in the\n"
-    "data folder (meshed by Mesh_3 with their sharp edges), and the files named: .mesh\n"
-    "or .msh meshes (our methods only) or closed .off surfaces (meshed, every method).\n"
-    "Reports dihedral angles, tetrahedra below 10 and above 170 degrees, vertices\n"
-    "added, volume change, relative Hausdorff distance of the boundary, and time. At\n"
-    "the benchmark size this takes a long while: CGAL's optimizers are slow.\n\n"
-    "  --small            small inputs (a few thousand tetrahedra): a quick run\n"
-    "  --output-dir DIR   write DIR/results.md, DIR/results.json and DIR/results/*.svg\n"
-    "                     (default: print the Markdown on stdout)\n"
-    "  --data-dir DIR     where to look for CGAL's surfaces (default: build/data in the\n"
-    "                     source tree, where scripts/setup.sh extracts them)\n"
-    "  --iterations N     iterations of every iterative method (default 20)\n"
-    "  --no-generated     leave out the generated inputs and the random sphere\n"
-    "  --no-surfaces      leave out CGAL's data surfaces\n"
-    "  --quiet            no progress on stderr\n";
-
-} // namespace
-
-int compare(const std::vector<std::string>& args, const std::string& program)
+struct Compare_options
 {
-  Arguments a(args);
-  if(a.flag("--help") || a.flag("-h"))
-  {
-    std::cout << compare_help;
-    return 0;
-  }
-  const bool small = a.flag("--small");
-  const bool generated = !a.flag("--no-generated");
-  const bool surfaces = !a.flag("--no-surfaces");
-  const bool quiet = a.flag("--quiet");
-  std::string output_dir, data_dir = bodt_compare::default_data_dir(), iterations_text;
-  a.option("--output-dir", output_dir);
-  a.option("--data-dir", data_dir);
-  bodt_compare::Options options;
-  if(a.option("--iterations", iterations_text))
-  {
-    std::size_t pos = 0;
-    long long n = 0;
-    try { n = std::stoll(iterations_text, &pos); } catch(...) {}
-    if(pos != iterations_text.size() || n < 1 || n > 10000)
-      throw Usage_error("--iterations must be an integer from 1 to 10000");
-    options.iterations = static_cast<std::size_t>(n);
-  }
-  const std::vector<std::string> files = a.positionals();
+  std::string program;
+  std::vector<std::string> files;
+  bool small = false, no_generated = false, no_surfaces = false, quiet = false;
+  std::string output_dir, data_dir = bodt_compare::default_data_dir();
+  std::size_t iterations = 20;
+};
 
-  if(!quiet) options.log = [](const std::string& line) { std::cerr << "compare: " << line << std::endl; };
-  const bodt_inputs::Size size = small ? bodt_inputs::Size::small : bodt_inputs::Size::benchmark;
+int run_compare(const Compare_options& o)
+{
+  bodt_compare::Options options;
+  options.iterations = o.iterations;
+  if(!o.quiet) options.log = [](const std::string& line) { std::cerr << "compare: " << line << std::endl; };
+  const bodt_inputs::Size size = o.small ? bodt_inputs::Size::small : bodt_inputs::Size::benchmark;
+  // Files named: a comparison on the user's own meshes, without the benchmark inputs.
+  const bool generated = o.files.empty() && !o.no_generated;
+  const bool surfaces = o.files.empty() && !o.no_surfaces;
 
   bodt_compare::Comparison comparison;
-  comparison.command = program;
-  for(const std::string& arg : args) comparison.command += " " + arg;
-  comparison.size = small ? "small" : "benchmark";
+  comparison.command = o.program;
+  comparison.benchmark = generated || surfaces;
+  comparison.size = o.small ? "small" : "benchmark";
   comparison.iterations = options.iterations;
   comparison.machine = bodt_compare::this_machine();
 
@@ -84,7 +50,7 @@ int compare(const std::vector<std::string>& args, const std::string& program)
   if(surfaces)
     for(const bodt_compare::Data_surface& s : bodt_compare::data_surfaces())
     {
-      const std::filesystem::path path = std::filesystem::path(data_dir) / s.file;
+      const std::filesystem::path path = std::filesystem::path(o.data_dir) / s.file;
       if(!std::filesystem::exists(path))
       {
         comparison.notes.push_back("`" + s.file + "` (" + s.note + ") was not found in the data folder: run "
@@ -95,7 +61,7 @@ int compare(const std::vector<std::string>& args, const std::string& program)
       inputs.push_back(bodt_compare::surface_input(path.string(), size));
       inputs.back().origin += ": " + s.note;
     }
-  for(const std::string& file : files)
+  for(const std::string& file : o.files)
   {
     options.log("reading " + file);
     const bool surface = file.size() > 4 && file.compare(file.size() - 4, 4, ".off") == 0;
@@ -113,14 +79,43 @@ int compare(const std::vector<std::string>& args, const std::string& program)
   for(const bodt_compare::Input& input : inputs)
     comparison.inputs.push_back(bodt_compare::compare(input, bodt_compare::methods(), options));
 
-  if(output_dir.empty())
+  if(o.output_dir.empty())
     std::cout << bodt_compare::markdown(comparison, bodt_compare::methods(), "results");
   else
   {
-    bodt_compare::write_results(comparison, bodt_compare::methods(), output_dir);
-    options.log("wrote " + (std::filesystem::path(output_dir) / "results.md").string());
+    bodt_compare::write_results(comparison, bodt_compare::methods(), o.output_dir);
+    options.log("wrote " + (std::filesystem::path(o.output_dir) / "results.md").string());
   }
   return 0;
+}
+
+} // namespace
+
+Command add_compare(CLI::App& command, const std::string& command_line)
+{
+  auto o = std::make_shared<Compare_options>();
+  o->program = command_line;
+  command.footer(
+      "Runs every smoothing method side by side and measures the results: the input, interior-only ODT,\n"
+      "B-ODT basic (Algorithm 2) and advanced (Algorithm 3, the default), and on Mesh_3 outputs CGAL's\n"
+      "odt_optimize_mesh_3, lloyd_optimize_mesh_3, perturb_mesh_3 + exude_mesh_3 and\n"
+      "tetrahedral_isotropic_remeshing. With no file named, the inputs are the benchmark's: the generated\n"
+      "Mesh_3 meshes, the random sphere, and CGAL's data surfaces found in the data folder (meshed by\n"
+      "Mesh_3 with their sharp edges). With files named, only those: .mesh or .msh meshes (our methods\n"
+      "only) or closed .off surfaces (meshed, every method). Reports dihedral angles, tetrahedra below 10\n"
+      "and above 170 degrees, vertices added, volume change, relative Hausdorff distance of the boundary,\n"
+      "and time. The benchmark takes a long while: CGAL's optimizers are slow.");
+  command.add_option("MESH", o->files, "your own meshes (.mesh, .msh) or closed surfaces (.off)");
+  command.add_flag("--small", o->small, "small inputs (a few thousand tetrahedra): a quick run");
+  command.add_option("--output-dir", o->output_dir,
+                     "write DIR/results.md, DIR/results.json and DIR/results/*.svg (default: print the Markdown)");
+  command.add_option("--data-dir", o->data_dir, "where to look for CGAL's surfaces (default: build/data)");
+  command.add_option("--iterations", o->iterations, "iterations of every iterative method (default 20)")
+      ->check(CLI::Range(1, 10000));
+  command.add_flag("--no-generated", o->no_generated, "leave out the generated inputs and the random sphere");
+  command.add_flag("--no-surfaces", o->no_surfaces, "leave out CGAL's data surfaces");
+  command.add_flag("-q,--quiet", o->quiet, "no progress on stderr");
+  return [o]() { return run_compare(*o); };
 }
 
 } // namespace bodt_cli

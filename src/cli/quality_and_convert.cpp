@@ -1,70 +1,104 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/commands.h"
+#include "cli/outputs.h"
 
+#include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 
 #include <iostream>
+#include <memory>
+#include <sstream>
 
 namespace bodt_cli {
 
+namespace BODT = CGAL::BODT_3;
 namespace IO = CGAL::BODT_3::IO;
 
-int quality(const std::vector<std::string>& argv)
+namespace {
+
+// The readers say that a section they skip "will not be written back", which is
+// true of commands that write the mesh; `quality` writes nothing, so it says only
+// that the section is not used.
+void print_warnings_of_reading_only(const std::string& warnings)
 {
-  Arguments args(argv);
-  if(args.flag("--help") || args.flag("-h"))
+  const std::string written_back = " and will not be written back";
+  std::istringstream in(warnings);
+  for(std::string line; std::getline(in, line);)
   {
-    std::cout << "usage: bodt quality MESH [--json] [--bins N]\n\n"
-                 "Measures a tetrahedral mesh (.mesh, .msh): number of vertices and tetrahedra,\n"
-                 "minimum and maximum dihedral angle, tetrahedra below 10 and above 170 degrees,\n"
-                 "radius ratio, total volume and volume per subdomain, inverted or flat tetrahedra\n"
-                 "(exact orientation predicates) and a dihedral-angle histogram.\n"
-                 "In a Medit file, tetrahedra labelled 0 are outside the mesh unless all are 0.\n\n"
-                 "  --json     print one JSON object instead of text\n"
-                 "  --bins N   histogram bins over [0, 180] degrees (default 36)\n";
-    return 0;
+    const std::size_t at = line.find(written_back);
+    if(at != std::string::npos) line.erase(at, written_back.size());
+    std::cerr << line << "\n";
   }
-  const bool json = args.flag("--json");
-  CGAL::BODT_3::Quality_options opt;
-  std::string bins;
-  if(args.option("--bins", bins))
-  {
-    try { opt.histogram_bins = std::stoi(bins); } catch(...) { opt.histogram_bins = 0; }
-    if(opt.histogram_bins < 1 || opt.histogram_bins > 18000)
-      throw Usage_error("--bins must be an integer from 1 to 18000");
-  }
-  const auto files = args.positionals();
-  if(files.size() != 1) throw Usage_error("expected exactly one mesh file");
-  const CGAL::BODT_3::Tet_mesh mesh = IO::read_mesh(files[0]);
-  const auto report = CGAL::BODT_3::mesh_quality(mesh, opt);
-  if(json)
-    std::cout << CGAL::BODT_3::to_json(report) << "\n";
+}
+
+struct Quality_options
+{
+  std::string input;
+  bool json = false;
+  BODT::Quality_options quality;
+};
+
+int run_quality(const Quality_options& o)
+{
+  check_input_path(o.input);
+  std::ostringstream warnings;
+  const BODT::Tet_mesh mesh = IO::read_mesh(o.input, warnings);
+  print_warnings_of_reading_only(warnings.str());
+  const BODT::Quality_report report = BODT::mesh_quality(mesh, o.quality);
+  if(o.json)
+    std::cout << BODT::to_json(report) << "\n";
   else
-    CGAL::BODT_3::print_report(std::cout, report);
+    BODT::print_report(std::cout, report);
   return 0;
 }
 
-int convert(const std::vector<std::string>& argv)
+struct Convert_options
 {
-  Arguments args(argv);
-  if(args.flag("--help") || args.flag("-h"))
-  {
-    std::cout << "usage: bodt convert IN OUT\n\n"
-                 "Converts a tetrahedral mesh between Medit (.mesh), Gmsh (.msh) and VTK (.vtu,\n"
-                 "write only); the format follows each file name. Vertices, tetrahedra and their\n"
-                 "labels, boundary triangles and feature edges are kept. OUT is written to a\n"
-                 "temporary file and renamed, so a failed run leaves no partial output.\n";
-    return 0;
-  }
-  const auto files = args.positionals();
-  if(files.size() != 2) throw Usage_error("expected an input and an output file");
-  if(IO::format_of(files[1]) == IO::Mesh_format::unknown)
-    throw Usage_error("cannot tell the output format from '" + files[1] + "'");
-  const CGAL::BODT_3::Tet_mesh mesh = IO::read_mesh(files[0]);
-  IO::write_mesh(files[1], mesh);
+  std::string input, output, format;
+};
+
+int run_convert(const Convert_options& o)
+{
+  check_input_path(o.input);
+  check_output_paths(o.input, {{"OUT", o.output}});
+  const Output_format format = choose_output_format(o.output, o.format);
+  write_output(o.output, IO::read_mesh(o.input), format);
   return 0;
+}
+
+} // namespace
+
+Command add_quality(CLI::App& command)
+{
+  auto o = std::make_shared<Quality_options>();
+  command.footer(
+      "Measures a tetrahedral mesh (.mesh, .msh): number of vertices and tetrahedra, minimum and maximum\n"
+      "dihedral angle, tetrahedra below 10 and above 170 degrees (and where they are: interior, touching\n"
+      "the boundary, all four vertices on it), radius ratio, total volume and volume per subdomain,\n"
+      "inverted or flat tetrahedra (exact orientation predicates) and a dihedral-angle histogram.\n"
+      "In a Medit file, tetrahedra labelled 0 are outside the mesh unless all are 0.");
+  command.add_option("mesh", o->input, "the mesh")->required();
+  command.add_flag("--json", o->json, "print one JSON object instead of text");
+  command.add_option("--bins", o->quality.histogram_bins, "histogram bins over [0, 180] degrees (default 36)")
+      ->check(CLI::Range(1, 18000));
+  return [o]() { return run_quality(*o); };
+}
+
+Command add_convert(CLI::App& command)
+{
+  auto o = std::make_shared<Convert_options>();
+  command.footer(
+      "Converts a tetrahedral mesh between Medit (.mesh), Gmsh (.msh) and VTK (.vtu, write only); the\n"
+      "format follows each file name, or --format. Vertices, tetrahedra and their labels, boundary\n"
+      "triangles and feature edges are kept. OUT is written to a temporary file and renamed, so a failed\n"
+      "run leaves no partial output.");
+  command.add_option("IN", o->input, "input mesh")->required();
+  command.add_option("OUT", o->output, "output mesh")->required();
+  command.add_option("--format", o->format, "output format whatever the name: mesh, msh (Gmsh 4.1), msh22, vtu")
+      ->check(CLI::IsMember(output_format_names()));
+  return [o]() { return run_convert(*o); };
 }
 
 } // namespace bodt_cli

@@ -178,6 +178,9 @@ Machine this_machine();
 struct Comparison
 {
   std::string command;   // the command line that produced it
+  /// The benchmark's inputs (generated, CGAL's surfaces) are in; false when the
+  /// comparison is on the user's own files only, which the text then says.
+  bool benchmark = true;
   std::string size;      // "benchmark" or "small"
   std::size_t iterations = 20;
   Machine machine;

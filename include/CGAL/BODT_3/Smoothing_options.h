@@ -41,7 +41,10 @@ constexpr std::size_t unlimited_iteration_cap = 1000;
 
 struct Smoothing_options
 {
-  std::size_t max_iteration_number = 20;   // the paper's 20 iterations; 0: no limit but `unlimited_iteration_cap`
+  /// The paper's 20 iterations. 0: until an iteration changes nothing or
+  /// `convergence` is reached, at most `unlimited_iteration_cap` iterations (CGAL's
+  /// optimizers cap 0 the same way).
+  std::size_t max_iteration_number = 20;
   double time_limit = 0;                   // seconds; 0 means no limit
   /// Stop when no vertex moved by more than this fraction of its local size
   /// (cube root of the mean volume of its cells) in a sweep; 0 disables the test.

@@ -216,38 +216,7 @@ mesh_quality(const Tr& tr, const Quality_options& opt = Quality_options())
   return acc.result(tr.number_of_vertices());
 }
 
-/// The report as one JSON object.
-inline std::string to_json(const Quality_report& r)
-{
-  std::ostringstream s;
-  auto num = [](double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    return std::string(buf);
-  };
-  s << "{\"num_vertices\": " << r.num_vertices << ", \"num_tets\": " << r.num_tets
-    << ", \"min_dihedral_deg\": " << num(r.min_dihedral_deg)
-    << ", \"max_dihedral_deg\": " << num(r.max_dihedral_deg)
-    << ", \"tets_below_" << num(r.options.small_angle) << "deg\": " << r.tets_below_small
-    << ", \"tets_above_" << num(r.options.large_angle) << "deg\": " << r.tets_above_large
-    << ", \"bad_tets\": {\"interior\": " << r.bad_tets_interior << ", \"touching_boundary\": "
-    << r.bad_tets_touching_boundary << ", \"all_vertices_on_boundary\": " << r.bad_tets_all_vertices_on_boundary
-    << "}"
-    << ", \"min_radius_ratio\": " << num(r.min_radius_ratio)
-    << ", \"mean_radius_ratio\": " << num(r.mean_radius_ratio) << ", \"volume\": " << num(r.volume)
-    << ", \"volume_per_subdomain\": {";
-  bool first = true;
-  for(const auto& kv : r.volume_per_subdomain)
-  {
-    s << (first ? "" : ", ") << "\"" << kv.first << "\": " << num(kv.second);
-    first = false;
-  }
-  s << "}, \"inverted_tets\": " << r.inverted_tets << ", \"histogram\": {\"bin_width_deg\": "
-    << num(180.0 / static_cast<double>(r.histogram.size())) << ", \"counts\": [";
-  for(std::size_t i = 0; i < r.histogram.size(); ++i) s << (i ? ", " : "") << r.histogram[i];
-  s << "]}}";
-  return s.str();
-}
+// The report as JSON: CGAL/BODT_3/IO/json_report.h.
 
 /// The report as a few lines of text for people.
 inline void print_report(std::ostream& out, const Quality_report& r)

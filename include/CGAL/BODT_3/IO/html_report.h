@@ -54,35 +54,44 @@ inline std::string report_format(const char* fmt, double x)
 
 inline std::string report_count(std::size_t n) { return std::to_string(n); }
 
-// One histogram figure. Inline SVG needs no namespace declaration in HTML, and
-// dropping it leaves the page free of any URL.
-inline std::string report_figure(const std::string& heading, const std::string& label, const char* colour,
-                                 const Quality_report& r, const std::string& caption)
+// The histogram figure: both series on one axis. Inline SVG needs no namespace
+// declaration in HTML, and dropping it leaves the page free of any URL.
+inline std::string report_figure(const Quality_report& before, const Quality_report& after)
 {
-  std::string svg = histogram_svg(heading, {histogram_series(label, colour, r)}, 580, 320);
+  Histogram_style style;
+  style.overlay = true;
+  style.log_counts = true;
+  style.small_angle = before.options.small_angle;
+  style.large_angle = before.options.large_angle;
+  std::string svg = histogram_svg("Dihedral angles before and after",
+                                  {histogram_series("before", report_before_colour, before),
+                                   histogram_series("after", report_after_colour, after)},
+                                  900, 360, style);
   const std::string xmlns = " xmlns=\"http://www.w3.org/2000/svg\"";
   const std::size_t at = svg.find(xmlns);
   if(at != std::string::npos) svg.erase(at, xmlns.size());
-  return "<figure>\n<div class=\"plot\"><span class=\"ylabel\">number of dihedral angles</span>\n" + svg +
-         "</div>\n<figcaption>" + caption + "</figcaption>\n</figure>\n";
-}
-
-inline std::string report_caption(const char* which, const Quality_report& r)
-{
-  const double bin = r.histogram.empty() ? 180.0 : 180.0 / static_cast<double>(r.histogram.size());
-  return std::string(which) + ": the " + report_count(6 * r.num_tets) + " dihedral angles of " +
-         report_count(r.num_tets) + " tetrahedra in bins of " + report_format("%g", bin) + "&deg;; smallest " +
-         report_format("%.2f", r.min_dihedral_deg) + "&deg;, largest " + report_format("%.2f", r.max_dihedral_deg) +
-         "&deg;.";
+  const double bin = before.histogram.empty() ? 180.0 : 180.0 / static_cast<double>(before.histogram.size());
+  const std::string small = report_format("%g", before.options.small_angle);
+  const std::string large = report_format("%g", before.options.large_angle);
+  return "<figure>\n<div class=\"plot\"><span class=\"ylabel\">number of dihedral angles (log scale)</span>\n" +
+         svg + "</div>\n<figcaption>All six dihedral angles of each tetrahedron in bins of " +
+         report_format("%g", bin) + "&deg;, before (grey, wide bars) and after (blue, narrow bars) on one axis. "
+         "The count axis is logarithmic, so that a single angle shows; the shaded tails are the angles below " +
+         small + "&deg; and above " + large + "&deg;. <span class=\"tails\">Tetrahedra with an angle below " + small +
+         "&deg;: " + report_count(before.tets_below_small) + " before, " + report_count(after.tets_below_small) +
+         " after; above " + large + "&deg;: " + report_count(before.tets_above_large) + " before, " +
+         report_count(after.tets_above_large) + " after.</span></figcaption>\n</figure>\n";
 }
 
 } // namespace internal
 
 /// A self-contained HTML page (inline CSS and SVG, no scripts, fonts or other
 /// files) reporting a smoothing run: `title` (typically the input file name) as
-/// heading, the quality table before and after, the `run` summary items, and the
-/// dihedral-angle histograms before (grey) and after (blue) side by side.
-/// All text given is escaped.
+/// heading, the quality table before and after (with the bad tetrahedra by where
+/// they are), the `run` summary items, the volume of every subdomain before and
+/// after, and the dihedral-angle histograms before (grey) and after (blue)
+/// overlaid on one log-scale axis with the tails below 10 and above 170 degrees
+/// shaded and counted. All text given is escaped.
 inline std::string html_report(const std::string& title, const Quality_report& before, const Quality_report& after,
                                const std::vector<Report_entry>& run)
 {
@@ -106,13 +115,11 @@ inline std::string html_report(const std::string& title, const Quality_report& b
        "ul.run { list-style: none; padding: 0; margin: 12px 0; display: flex; flex-wrap: wrap; gap: 4px 28px; "
        "font-size: 15px; }\n"
        "ul.run b { color: #555; font-weight: normal; }\n"
-       ".figures { display: flex; flex-wrap: wrap; gap: 24px; }\n"
        "figure { margin: 0; }\n"
        ".plot { display: flex; align-items: center; }\n"
        ".ylabel { writing-mode: vertical-rl; transform: rotate(180deg); font-size: 12px; }\n"
        "svg { display: block; max-width: 100%; height: auto; }\n"
-       "figcaption { font-size: 14px; max-width: 580px; margin: 4px 0 0 18px; }\n"
-       "p.note { color: #555; font-size: 14px; margin: 16px 0; }\n"
+       "figcaption { font-size: 14px; max-width: 900px; margin: 4px 0 0 18px; }\n"
        "</style>\n</head>\n<body>\n";
   h += "<h1>" + html_escape(title) + "</h1>\n<p class=\"what\">B-ODT smoothing report (bodt smooth)</p>\n";
 
@@ -131,6 +138,11 @@ inline std::string html_report(const std::string& title, const Quality_report& b
       report_count(before.tets_below_small), report_count(after.tets_below_small));
   row("tets with an angle above " + report_format("%g", before.options.large_angle) + "&deg;",
       report_count(before.tets_above_large), report_count(after.tets_above_large));
+  row("bad tets in the interior", report_count(before.bad_tets_interior), report_count(after.bad_tets_interior));
+  row("bad tets touching the boundary", report_count(before.bad_tets_touching_boundary),
+      report_count(after.bad_tets_touching_boundary));
+  row("bad tets with all vertices on the boundary", report_count(before.bad_tets_all_vertices_on_boundary),
+      report_count(after.bad_tets_all_vertices_on_boundary));
   row("mean radius ratio", ratio(before.mean_radius_ratio), ratio(after.mean_radius_ratio));
   row("min radius ratio", ratio(before.min_radius_ratio), ratio(after.min_radius_ratio));
   row("volume", volume(before.volume), volume(after.volume));
@@ -141,13 +153,18 @@ inline std::string html_report(const std::string& title, const Quality_report& b
   for(const auto& e : run) h += "<li><b>" + html_escape(e.name) + ":</b> " + html_escape(e.value) + "</li>\n";
   h += "</ul>\n";
 
-  h += "<h2>Dihedral angles</h2>\n<div class=\"figures\">\n";
-  h += internal::report_figure("Before smoothing", "before", report_before_colour, before,
-                               internal::report_caption("Before smoothing", before));
-  h += internal::report_figure("After smoothing", "after", report_after_colour, after,
-                               internal::report_caption("After smoothing", after));
-  h += "</div>\n<p class=\"note\">Both histograms count the same angles; each has its own vertical scale.</p>\n"
-       "</body>\n</html>\n";
+  h += "<h2>Volume per subdomain</h2>\n<table class=\"volumes\">\n<thead><tr><th>subdomain</th><th>before</th>"
+       "<th>after</th><th>relative change</th></tr></thead>\n<tbody>\n";
+  for(const auto& kv : before.volume_per_subdomain)
+  {
+    const auto it = after.volume_per_subdomain.find(kv.first);
+    const double a = it == after.volume_per_subdomain.end() ? 0.0 : it->second;
+    h += "<tr><th scope=\"row\">" + std::to_string(kv.first) + "</th><td>" + volume(kv.second) + "</td><td>" +
+         volume(a) + "</td><td>" + report_format("%.2e", (a - kv.second) / kv.second) + "</td></tr>\n";
+  }
+  h += "</tbody>\n</table>\n";
+
+  h += "<h2>Dihedral angles</h2>\n" + internal::report_figure(before, after) + "</body>\n</html>\n";
   return h;
 }
 

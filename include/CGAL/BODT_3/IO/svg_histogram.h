@@ -6,6 +6,7 @@
 #include <CGAL/BODT_3/mesh_quality.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -22,12 +23,26 @@ struct Histogram_series
   std::vector<std::size_t> counts;   // equal bins over [0, 180] degrees
 };
 
+/// How a histogram is drawn.
+struct Histogram_style
+{
+  /// Series drawn over each other in each bin, the first widest, so that every
+  /// series shows on one axis (the paper's figures); otherwise side by side.
+  bool overlay = false;
+  /// Counts on a log(1 + n) axis, so that a single tetrahedron among 100,000 still
+  /// shows as a bar; otherwise linear.
+  bool log_counts = false;
+  /// Angles (degrees) below and above which the tails are shaded; negative: none.
+  double small_angle = -1;
+  double large_angle = -1;
+};
+
 /// An SVG picture (as text, for a file or to inline in HTML) of dihedral-angle
-/// histograms, the paper's figures: the series are drawn side by side in each bin,
-/// over a degree axis with ticks every 30 degrees, with a legend. Counts are drawn
-/// on a linear axis; `title` goes on top. Every series must have the same bins.
+/// histograms, the paper's figures: the series over a degree axis with ticks every
+/// 30 degrees, with a legend, drawn as `style` says; `title` goes on top. Every
+/// series must have the same bins.
 inline std::string histogram_svg(const std::string& title, const std::vector<Histogram_series>& series,
-                                 int width = 640, int height = 320)
+                                 int width = 640, int height = 320, const Histogram_style& style = Histogram_style())
 {
   const double left = 60, right = 20, top = 40, bottom = 45;
   const double pw = width - left - right, ph = height - top - bottom;
@@ -37,6 +52,11 @@ inline std::string histogram_svg(const std::string& title, const std::vector<His
     bins = std::max(bins, s.counts.size());
     for(std::size_t c : s.counts) peak = std::max(peak, c);
   }
+  // Height of a count as a fraction of the plot's.
+  auto scale = [&](double n) {
+    return style.log_counts ? std::log10(1 + n) / std::log10(1 + static_cast<double>(peak))
+                            : n / static_cast<double>(peak);
+  };
   std::string out;
   char buf[512];
   auto add = [&](const char* fmt, auto... args) {
@@ -56,29 +76,54 @@ inline std::string histogram_svg(const std::string& title, const std::vector<His
   add("<rect width=\"%d\" height=\"%d\" fill=\"white\"/>\n", width, height);
   add("<text x=\"%g\" y=\"22\" font-size=\"15\" text-anchor=\"middle\">", width / 2.0);
   out += escaped(title) + "</text>\n";
-  // Count axis: the smallest step of the form 1, 2 or 5 times a power of ten giving at most six ticks.
-  double step = 1;
-  for(double m = 1; peak / step > 6; m *= 10)
-    for(double f : {1.0, 2.0, 5.0})
-      if(peak / (f * m) <= 6 && peak / step > 6) step = f * m;
-  for(double y = 0; y <= peak; y += step)
+  // The tails, shaded behind everything else.
+  auto shade = [&](double from_deg, double to_deg) {
+    add("<rect class=\"tail\" x=\"%.2f\" y=\"%g\" width=\"%.2f\" height=\"%g\" fill=\"#fbe3e3\"/>\n",
+        left + pw * from_deg / 180.0, top, pw * (to_deg - from_deg) / 180.0, ph);
+  };
+  if(style.small_angle > 0) shade(0, style.small_angle);
+  if(style.large_angle > 0 && style.large_angle < 180) shade(style.large_angle, 180);
+  if(style.log_counts)
   {
-    const double py = top + ph - ph * y / peak;
-    add("<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"#ddd\"/>\n", left, py, left + pw, py);
-    add("<text x=\"%g\" y=\"%g\" text-anchor=\"end\">%.0f</text>\n", left - 5, py + 4, y);
+    // Ticks at 0, 1, 10, 100, ...
+    for(double y = 0; y <= peak; y = y == 0 ? 1 : y * 10)
+    {
+      const double py = top + ph - ph * scale(y);
+      add("<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"#ddd\"/>\n", left, py, left + pw, py);
+      add("<text x=\"%g\" y=\"%g\" text-anchor=\"end\">%.0f</text>\n", left - 5, py + 4, y);
+    }
+  }
+  else
+  {
+    // The smallest step of the form 1, 2 or 5 times a power of ten giving at most six ticks.
+    double step = 1;
+    for(double m = 1; peak / step > 6; m *= 10)
+      for(double f : {1.0, 2.0, 5.0})
+        if(peak / (f * m) <= 6 && peak / step > 6) step = f * m;
+    for(double y = 0; y <= peak; y += step)
+    {
+      const double py = top + ph - ph * scale(y);
+      add("<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"#ddd\"/>\n", left, py, left + pw, py);
+      add("<text x=\"%g\" y=\"%g\" text-anchor=\"end\">%.0f</text>\n", left - 5, py + 4, y);
+    }
   }
   if(bins > 0 && !series.empty())
   {
     const double bw = pw / static_cast<double>(bins);
-    const double sw = bw / static_cast<double>(series.size());
     for(std::size_t k = 0; k < series.size(); ++k)
+    {
+      // Overlaid: each series narrower than the one before, centred in the bin.
+      const double w = style.overlay ? bw * (1.0 - 0.45 * static_cast<double>(k) / std::max<std::size_t>(1, series.size() - 1))
+                                     : bw / static_cast<double>(series.size());
+      const double offset = style.overlay ? (bw - w) / 2 : w * static_cast<double>(k);
       for(std::size_t b = 0; b < series[k].counts.size(); ++b)
       {
-        const double h = ph * static_cast<double>(series[k].counts[b]) / peak;
+        const double h = ph * scale(static_cast<double>(series[k].counts[b]));
         if(h <= 0) continue;
-        add("<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
-            left + b * bw + k * sw, top + ph - h, sw, h, series[k].colour.c_str());
+        add("<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n", left + b * bw + offset,
+            top + ph - h, w, h, series[k].colour.c_str());
       }
+    }
   }
   for(int deg = 0; deg <= 180; deg += 30)
   {

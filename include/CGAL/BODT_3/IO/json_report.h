@@ -1,0 +1,173 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_IO_JSON_REPORT_H
+#define CGAL_BODT_3_IO_JSON_REPORT_H
+
+// JSON for the quality and smoothing records, built with nlohmann::json (Debian's
+// nlohmann-json3-dev), which escapes every string and writes a value that is not
+// finite (NaN, infinity) as null: the output is always valid JSON. Only this header
+// needs the library; the rest of the package does not.
+
+#include <CGAL/BODT_3/Return_code.h>
+#include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/mesh_quality.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+// nlohmann finds these by argument-dependent lookup: `nlohmann::json j = report;`.
+
+inline void to_json(nlohmann::json& j, const Quality_report& r)
+{
+  char small[32], large[32];
+  std::snprintf(small, sizeof small, "tets_below_%gdeg", r.options.small_angle);
+  std::snprintf(large, sizeof large, "tets_above_%gdeg", r.options.large_angle);
+  nlohmann::json volumes = nlohmann::json::object();
+  for(const auto& kv : r.volume_per_subdomain) volumes[std::to_string(kv.first)] = kv.second;
+  j = nlohmann::json{{"num_vertices", r.num_vertices},
+                     {"num_tets", r.num_tets},
+                     {"min_dihedral_deg", r.min_dihedral_deg},
+                     {"max_dihedral_deg", r.max_dihedral_deg},
+                     {"small_angle_deg", r.options.small_angle},
+                     {"large_angle_deg", r.options.large_angle},
+                     {small, r.tets_below_small},
+                     {large, r.tets_above_large},
+                     {"bad_tets",
+                      {{"interior", r.bad_tets_interior},
+                       {"touching_boundary", r.bad_tets_touching_boundary},
+                       {"all_vertices_on_boundary", r.bad_tets_all_vertices_on_boundary}}},
+                     {"min_radius_ratio", r.min_radius_ratio},
+                     {"mean_radius_ratio", r.mean_radius_ratio},
+                     {"volume", r.volume},
+                     {"volume_per_subdomain", volumes},
+                     {"inverted_tets", r.inverted_tets},
+                     {"histogram",
+                      {{"bin_width_deg", r.histogram.empty() ? 180.0 : 180.0 / static_cast<double>(r.histogram.size())},
+                       {"counts", r.histogram}}}};
+}
+
+inline void to_json(nlohmann::json& j, const Topology_stats& s)
+{
+  j = nlohmann::json{{"flips_2_3", s.flips_2_3},
+                     {"flips_3_2", s.flips_3_2},
+                     {"edge_removals", s.edge_removals},
+                     {"multi_face_removals", s.multi_face_removals},
+                     {"boundary_flips", s.boundary_flips},
+                     {"total", s.total()},
+                     {"seconds", s.seconds}};
+}
+
+inline void to_json(nlohmann::json& j, const Insertion_stats& s)
+{
+  j = nlohmann::json{{"spade_splits", s.spade_splits},
+                     {"cap_splits", s.cap_splits},
+                     {"sliver_splits", s.sliver_splits},
+                     {"undone", s.undone},
+                     {"vertices_added", s.vertices_added},
+                     {"seconds", s.seconds}};
+}
+
+inline void to_json(nlohmann::json& j, const Iteration_stats& s)
+{
+  j = nlohmann::json{{"iteration", s.iteration},
+                     {"moved", s.moved},
+                     {"shortened", s.shortened},
+                     {"refused", s.refused},
+                     {"refused_because",
+                      {{"inverting_mesh_cell", s.refused_inverting_mesh_cell},
+                       {"inverting_outside_cell", s.refused_inverting_outside_cell},
+                       {"breaking_hull", s.refused_breaking_hull},
+                       {"worsening_quality", s.refused_worsening_quality}}},
+                     {"max_relative_move", s.max_relative_move},
+                     {"topology", s.topology},
+                     {"insertion", s.insertion},
+                     {"sweep_seconds", s.sweep_seconds},
+                     {"seconds", s.seconds}};
+}
+
+inline void to_json(nlohmann::json& j, const Smoothing_result& r)
+{
+  j = nlohmann::json{{"return_code", to_string(r.code)},
+                     {"iterations", r.iterations},
+                     {"moved_vertices", r.moved_vertices},
+                     {"vertices",
+                      {{"interior", r.interior_vertices},
+                       {"surface", r.surface_vertices},
+                       {"feature", r.feature_vertices},
+                       {"fixed", r.fixed_vertices},
+                       {"non_manifold", r.non_manifold_vertices},
+                       {"tensor_voting", r.used_tensor_voting}}},
+                     {"topology", r.topology},
+                     {"insertion", r.insertion},
+                     {"seconds", r.seconds}};
+}
+
+/// The name of `Moving_vertices` values as the command line spells them.
+inline const char* method_name(Moving_vertices m)
+{
+  switch(m)
+  {
+  case Moving_vertices::ALL: return "bodt";
+  case Moving_vertices::INTERIOR: return "odt";
+  case Moving_vertices::NONE: return "flips";
+  }
+  return "unknown";
+}
+
+inline void to_json(nlohmann::json& j, const Smoothing_options& o)
+{
+  j = nlohmann::json{{"method", method_name(o.moving_vertices)},
+                     {"max_iteration_number", o.max_iteration_number},
+                     {"time_limit", o.time_limit},
+                     {"convergence", o.convergence},
+                     {"preserve_features", o.preserve_features},
+                     {"quality_guard", o.quality_guard},
+                     {"topology_optimization", o.topology_optimization},
+                     {"vertex_insertion", o.vertex_insertion},
+                     {"max_vertex_insertions", o.max_vertex_insertions},
+                     {"tensor_voting",
+                      {{"edge_ratio", o.tensor_voting.edge_ratio},
+                       {"corner_ratio", o.tensor_voting.corner_ratio},
+                       {"angle_weighted", o.tensor_voting.angle_weighted}}}};
+}
+
+/// The quality report as one line of JSON (`bodt quality --json`).
+inline std::string to_json(const Quality_report& r) { return nlohmann::json(r).dump(); }
+
+/// Everything known about a smoothing run: the options, the result with its totals,
+/// every iteration, the quality before and after, and the volume changes (whole
+/// mesh, and the largest relative change of a subdomain).
+inline nlohmann::json smoothing_report(const Smoothing_options& options, const Smoothing_result& result,
+                                       const std::vector<Iteration_stats>& iterations, const Quality_report& before,
+                                       const Quality_report& after)
+{
+  double max_subdomain_change = 0;
+  for(const auto& kv : before.volume_per_subdomain)
+  {
+    const auto it = after.volume_per_subdomain.find(kv.first);
+    const double v1 = it == after.volume_per_subdomain.end() ? 0.0 : it->second;
+    max_subdomain_change = std::max(max_subdomain_change, std::abs(v1 - kv.second) / std::abs(kv.second));
+  }
+  nlohmann::json j;
+  j["options"] = options;
+  j["result"] = result;
+  j["per_iteration"] = iterations;
+  j["before"] = before;
+  j["after"] = after;
+  j["volume_change"] = after.volume - before.volume;
+  j["relative_volume_change"] = (after.volume - before.volume) / before.volume;
+  j["max_relative_subdomain_volume_change"] = max_subdomain_change;
+  return j;
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_IO_JSON_REPORT_H

@@ -1,0 +1,286 @@
+// The command-line tool's behaviour: --version, a silent --quiet, output paths
+// refused before any work, reports that appear with the mesh, valid JSON whatever
+// the paths, --format, --iterations 0, the wording of `quality` and `compare`, and
+// the progress display.
+#include "cli/progress.h"
+
+#include <CGAL/BODT_3/IO/medit.h>
+#include <CGAL/BODT_3/Tet_mesh.h>
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace fs = std::filesystem;
+using namespace bodt_test;
+namespace BODT = CGAL::BODT_3;
+using Point = BODT::Tet_mesh::Point;
+
+namespace {
+
+// A 3x3x3 grid of cubes in two subdomains, interior points moved so that smoothing has work.
+BODT::Tet_mesh test_mesh()
+{
+  const int n = 3;
+  BODT::Tet_mesh m = cube_grid(n, [](int i, int, int) { return i < 1 ? 2 : 1; });
+  for(int k = 1; k < n; ++k)
+    for(int j = 1; j < n; ++j)
+      for(int i = 1; i < n; ++i)
+        m.points[grid_index(n, i, j, k)] = Point(i + 0.13 * ((i + 2 * j) % 3 - 1), j + 0.11 * ((j + k) % 3 - 1),
+                                                 k + 0.12 * ((i + k) % 3 - 1));
+  return m;
+}
+
+fs::path write_test_mesh(const fs::path& dir, const std::string& name = "in.mesh")
+{
+  const fs::path p = dir / name;
+  BODT::IO::write_medit(p.string(), test_mesh());
+  return p;
+}
+
+std::string q(const fs::path& p) { return shell_quoted(p); }
+
+} // namespace
+
+TEST(Cli, VersionAndHelp)
+{
+  std::string out;
+  ASSERT_EQ(run_bodt("--version", out), 0);
+  EXPECT_EQ(out.rfind(std::string("bodt ") + BODT_VERSION, 0), 0u) << out;
+  ASSERT_EQ(run_bodt("smooth --help", out), 0);
+  for(const char* option : {"--method", "--no-flips", "--no-insertion", "--max-insertions", "--format", "--quiet",
+                            "--report", "--html", "--iterations", "--convergence"})
+    EXPECT_NE(out.find(option), std::string::npos) << option;
+  EXPECT_EQ(run_bodt("", out), 2);
+  EXPECT_EQ(run_bodt("smooth", out), 2);
+  EXPECT_EQ(run_bodt("smooth in.mesh -o out.mesh --method simplex", out), 2);
+}
+
+TEST(Cli, QuietPrintsNothing)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  std::string out;
+  ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --quiet", out, dir), 0);
+  EXPECT_EQ(out, "");
+  EXPECT_TRUE(fs::exists(dir / "out.mesh"));
+  ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out2.mesh"), out, dir), 0);
+  EXPECT_NE(out.find("min dihedral"), std::string::npos) << out;
+  EXPECT_NE(out.find("all vertices on boundary"), std::string::npos) << out;
+}
+
+// Unusable output paths end the run before the mesh is even read, with the
+// option and path in the message, exit status 2, and nothing written.
+TEST(Cli, OutputPathsAreRefusedBeforeAnyWork)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  const std::string input_text = read_text(in);
+  struct Case
+  {
+    std::string args, message;
+  };
+  const std::vector<Case> cases = {
+      {"-o " + q(dir / "missing" / "out.mesh"), "does not exist"},
+      {"-o " + q(dir / "out.mesh") + " --report " + q(dir / "out.mesh"), "--report"},
+      {"-o " + q(dir / "out.mesh") + " --html " + q(dir / "r.json") + " --report " + q(dir / "r.json"), "same file"},
+      {"-o " + q(in), "the input"},
+      {"-o " + q(dir / "." / "in.mesh"), "the input"},
+      {"-o " + q(dir), "folder"},
+      {"-o " + q(dir / "out.mesh") + " --report " + q(dir / "missing" / "r.json"), "--report"},
+      {"-o " + q(dir / "out.xyz"), "cannot tell the output format"},
+      {"-o " + q(dir / "out.mesh") + " --format vtu", "contradicts"},
+  };
+  for(const Case& c : cases)
+  {
+    std::string out;
+    EXPECT_EQ(run_bodt("smooth " + q(in) + " " + c.args, out, dir), 2) << c.args << "\n" << out;
+    EXPECT_NE(out.find(c.message), std::string::npos) << c.args << "\n" << out;
+    EXPECT_EQ(out.find("interior,"), std::string::npos) << "the mesh was read and classified: " << out;
+    EXPECT_FALSE(fs::exists(dir / "out.mesh")) << c.args;
+    EXPECT_FALSE(fs::exists(dir / "r.json")) << c.args;
+  }
+  EXPECT_EQ(read_text(in), input_text);
+  // No temporary file is left behind either.
+  for(const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+}
+
+// A failed run writes nothing: here the input is refused after the paths were checked.
+TEST(Cli, FailedRunWritesNothing)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = dir / "broken.mesh";
+  std::ofstream(in) << "MeshVersionFormatted 1\nDimension 3\nVertices\n2\n0 0 0 0\n";
+  std::string out;
+  EXPECT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --report " + q(dir / "r.json") +
+                         " --html " + q(dir / "r.html"),
+                     out, dir),
+            1)
+      << out;
+  EXPECT_NE(out.find("broken.mesh"), std::string::npos) << out;
+  for(const char* f : {"out.mesh", "r.json", "r.html"}) EXPECT_FALSE(fs::exists(dir / f)) << f;
+  // A folder as input is named in the message.
+  fs::create_directories(dir / "folder.mesh");
+  EXPECT_EQ(run_bodt("smooth " + q(dir / "folder.mesh") + " -o " + q(dir / "out.mesh"), out, dir), 1);
+  EXPECT_NE(out.find("folder.mesh: is a folder"), std::string::npos) << out;
+  EXPECT_EQ(run_bodt("quality " + q(dir / "folder.mesh"), out, dir), 1);
+  EXPECT_NE(out.find("folder.mesh: is a folder"), std::string::npos) << out;
+}
+
+// Paths with a quote and a backslash give valid JSON, which holds everything the
+// run knows: options, result totals, one record per sweep, quality before/after.
+TEST(Cli, ReportIsValidJsonWithEverything)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir, "odd \"name\" \\ here.mesh");
+  const fs::path report = dir / "r \"1\".json";
+  std::string out;
+  ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --report " + q(report) +
+                         " --iterations 5 --no-insertion --max-insertions 7 --quiet",
+                     out, dir),
+            0)
+      << out;
+  const nlohmann::json j = nlohmann::json::parse(read_text(report));
+  EXPECT_EQ(j.at("input"), in.string());
+  EXPECT_EQ(j.at("output_format"), "mesh");
+  EXPECT_EQ(j.at("options").at("max_iteration_number"), 5);
+  EXPECT_EQ(j.at("options").at("vertex_insertion"), false);
+  EXPECT_EQ(j.at("options").at("topology_optimization"), true);
+  EXPECT_EQ(j.at("options").at("max_vertex_insertions"), 7);
+  EXPECT_EQ(j.at("options").at("method"), "bodt");
+  const nlohmann::json& r = j.at("result");
+  EXPECT_EQ(r.at("return_code"), "MAX_ITERATION_NUMBER_REACHED");
+  ASSERT_EQ(r.at("iterations"), 5);
+  ASSERT_EQ(j.at("per_iteration").size(), 5u);
+  std::size_t moved = 0;
+  for(const nlohmann::json& s : j.at("per_iteration"))
+  {
+    for(const char* key : {"moved", "refused", "refused_because", "topology", "insertion", "seconds"})
+      EXPECT_TRUE(s.contains(key)) << key;
+    moved = std::max<std::size_t>(moved, s.at("moved"));
+  }
+  EXPECT_GT(moved, 0u);
+  for(const char* key : {"flips_2_3", "flips_3_2", "edge_removals", "multi_face_removals", "boundary_flips"})
+    EXPECT_TRUE(r.at("topology").contains(key)) << key;
+  for(const char* key : {"spade_splits", "cap_splits", "sliver_splits", "undone", "vertices_added"})
+    EXPECT_TRUE(r.at("insertion").contains(key)) << key;
+  for(const char* side : {"before", "after"})
+  {
+    const nlohmann::json& qr = j.at(side);
+    for(const char* key : {"interior", "touching_boundary", "all_vertices_on_boundary"})
+      EXPECT_TRUE(qr.at("bad_tets").contains(key)) << key;
+    EXPECT_EQ(qr.at("volume_per_subdomain").size(), 2u);
+  }
+  EXPECT_GT(j.at("after").at("min_dihedral_deg").get<double>(), j.at("before").at("min_dihedral_deg").get<double>());
+  EXPECT_LT(std::abs(j.at("max_relative_subdomain_volume_change").get<double>()), 1e-10);
+}
+
+TEST(Cli, ZeroIterationsRunsUntilNothingChanges)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  std::string out;
+  ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --iterations 0 --report " +
+                         q(dir / "r.json") + " --quiet",
+                     out, dir),
+            0)
+      << out;
+  const nlohmann::json r = nlohmann::json::parse(read_text(dir / "r.json")).at("result");
+  EXPECT_LE(r.at("iterations").get<int>(), 1000);
+  if(r.at("iterations") < 1000)
+  {
+    EXPECT_EQ(r.at("return_code"), "CANT_IMPROVE_ANYMORE");
+  }
+}
+
+TEST(Cli, FormatOptionChoosesTheWriter)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  std::string out;
+  ASSERT_EQ(run_bodt("convert " + q(in) + " " + q(dir / "out.msh") + " --format msh22", out, dir), 0) << out;
+  EXPECT_EQ(read_text(dir / "out.msh").rfind("$MeshFormat\n2.2", 0), 0u);
+  ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "plain") + " --format vtu --quiet", out, dir), 0) << out;
+  EXPECT_NE(read_text(dir / "plain").find("<VTKFile"), std::string::npos);
+  EXPECT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --method flips --no-flips", out, dir), 2);
+}
+
+// `quality` writes nothing, so it does not say that skipped sections will not be written back.
+TEST(Cli, QualityDoesNotTalkAboutWritingBack)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  std::string text = read_text(in);
+  const std::size_t end = text.rfind("End");
+  ASSERT_NE(end, std::string::npos);
+  text.insert(end, "Normals\n1\n0 0 1\n");
+  std::ofstream(dir / "normals.mesh") << text;
+  std::string out;
+  ASSERT_EQ(run_bodt("quality " + q(dir / "normals.mesh"), out, dir), 0) << out;
+  EXPECT_NE(out.find("Normals"), std::string::npos) << out;
+  EXPECT_EQ(out.find("written back"), std::string::npos) << out;
+  ASSERT_EQ(run_bodt("quality --json " + q(in), out, dir), 0) << out;
+  EXPECT_EQ(nlohmann::json::parse(out).at("num_tets"), 162);
+}
+
+// `bodt compare` on the user's own file runs bodt-compare on that file only, and
+// its text does not describe the benchmark.
+TEST(Cli, CompareOnOwnFileHasNoBenchmarkWording)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  std::string out;
+  ASSERT_EQ(run_bodt("compare --quiet " + q(in), out, dir), 0) << out;
+  EXPECT_NE(out.find("your meshes"), std::string::npos) << out;
+  EXPECT_NE(out.find("| in |"), std::string::npos) << out;
+  for(const char* benchmark : {"benchmark", "results.sh", "40,000", "generated", "paper's figures"})
+    EXPECT_EQ(out.find(benchmark), std::string::npos) << benchmark << " in\n" << out;
+}
+
+namespace {
+
+std::string progress_text(bool quiet, std::size_t iterations, double time_limit, double seconds_per_sweep,
+                          std::size_t sweeps)
+{
+  std::FILE* f = std::tmpfile();
+  BODT::Smoothing_options o;
+  o.max_iteration_number = iterations;
+  o.time_limit = time_limit;
+  bodt_cli::Progress progress(quiet, o, f);
+  for(std::size_t i = 1; i <= sweeps; ++i)
+  {
+    BODT::Iteration_stats s;
+    s.iteration = i;
+    s.seconds = seconds_per_sweep * static_cast<double>(i);
+    progress.after_iteration(s);
+  }
+  progress.finish();
+  std::rewind(f);
+  std::string text;
+  for(int c; (c = std::fgetc(f)) != EOF;) text += static_cast<char>(c);
+  std::fclose(f);
+  EXPECT_EQ(progress.iterations().size(), sweeps);
+  return text;
+}
+
+} // namespace
+
+TEST(Progress, ShowsTotalAndTimeLeftOnlyOnLongRuns)
+{
+  // 1.5 s a sweep: after sweep 3 of 20, 17 sweeps or 25.5 s are left.
+  const std::string text = progress_text(false, 20, 0, 1.5, 3);
+  EXPECT_NE(text.find("sweep 3 of 20"), std::string::npos) << text;
+  EXPECT_NE(text.find("about 26 s left"), std::string::npos) << text;
+  // The first sweep ended before 1 s had passed: no line for it.
+  EXPECT_EQ(progress_text(false, 20, 0, 0.4, 2), "");
+  EXPECT_EQ(progress_text(true, 20, 0, 1.5, 3), "");
+  // A time limit bounds the estimate; 0 iterations show the cap.
+  EXPECT_NE(progress_text(false, 20, 6.2, 1.5, 3).find("about 2 s left"), std::string::npos);
+  EXPECT_NE(progress_text(false, 0, 0, 1.5, 1).find("until convergence, at most 1000"), std::string::npos);
+}
