@@ -36,14 +36,17 @@ struct Flip_options
 };
 
 /// With `max_iteration_number = 0` (no limit), the pipeline still stops after this
-/// many iterations, so that every run ends.
+/// many iterations, so that every run ends ...
 constexpr std::size_t unlimited_iteration_cap = 1000;
+/// ... and, unless `convergence` is given, at this convergence (CGAL's optimizers'
+/// default): otherwise smoothing goes on with ever smaller moves.
+constexpr double unlimited_convergence = 0.02;
 
 struct Smoothing_options
 {
   /// The paper's 20 iterations. 0: until an iteration changes nothing or
-  /// `convergence` is reached, at most `unlimited_iteration_cap` iterations (CGAL's
-  /// optimizers cap 0 the same way).
+  /// `convergence` (default then `unlimited_convergence`) is reached, at most
+  /// `unlimited_iteration_cap` iterations (CGAL's optimizers cap 0 the same way).
   std::size_t max_iteration_number = 20;
   double time_limit = 0;                   // seconds; 0 means no limit
   /// Stop when no vertex moved by more than this fraction of its local size

@@ -39,8 +39,9 @@ struct Classify_by_hints
 /// cells concerned, worst first, within the input's extreme angles, so the mesh
 /// never ends worse than it started. It stops after `max_iteration_number`
 /// iterations (0: `unlimited_iteration_cap`), at the time limit, at convergence
-/// (no vertex moved by more than `convergence` of its local size and no flip), or
-/// when an iteration changed nothing.
+/// (no vertex moved by more than `convergence` of its local size and no flip; with
+/// no iteration limit and no convergence given, `unlimited_convergence`), or when
+/// an iteration changed nothing.
 template <class Labels, class Classify, class Visitor>
 Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const Smoothing_options& opt,
                                Visitor&& visitor)
@@ -82,7 +83,9 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   Flip_history history;
   std::vector<std::size_t> changed_at(mesh.number_of_vertices(), 0);   // per vertex: when it last moved or flipped
 
-  const std::size_t last = opt.max_iteration_number == 0 ? unlimited_iteration_cap : opt.max_iteration_number;
+  const bool unlimited = opt.max_iteration_number == 0;
+  const std::size_t last = unlimited ? unlimited_iteration_cap : opt.max_iteration_number;
+  const double convergence = unlimited && opt.convergence == 0 ? unlimited_convergence : opt.convergence;
   result.code = MAX_ITERATION_NUMBER_REACHED;
   for(std::size_t it = 1; it <= last; ++it)
   {
@@ -123,7 +126,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     visitor.after_iteration(stats);
     const bool flipped = stats.topology.total() > 0;
     if(stats.moved == 0 && !flipped) { result.code = CANT_IMPROVE_ANYMORE; break; }
-    if(opt.convergence > 0 && stats.max_relative_move < opt.convergence && !flipped)
+    if(convergence > 0 && stats.max_relative_move < convergence && !flipped)
     {
       result.code = CONVERGENCE_REACHED;
       break;
