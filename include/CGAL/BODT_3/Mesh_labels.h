@@ -3,6 +3,10 @@
 #ifndef CGAL_BODT_3_MESH_LABELS_H
 #define CGAL_BODT_3_MESH_LABELS_H
 
+#include <CGAL/number_utils.h>
+#include <CGAL/Kernel/global_functions.h>
+
+#include <algorithm>
 #include <type_traits>
 #include <utility>
 
@@ -61,7 +65,12 @@ public:
   using Region = BODT_3::Region<typename C3T3::Subdomain_index>;
   using Patch = BODT_3::Patch<typename C3T3::Surface_patch_index>;
 
-  explicit C3t3_labels(C3T3& c3t3) : c3t3_(c3t3) {}
+  /// `convex_hull`: whether the triangulation's infinite cells close a real convex
+  /// hull that must stay convex (a C3T3 from Mesh_3), or only close the mesh
+  /// combinatorially, as for a mesh read from a file (tet_mesh_to_c3t3).
+  explicit C3t3_labels(C3T3& c3t3, bool convex_hull = true) : c3t3_(c3t3), convex_hull_(convex_hull) {}
+
+  bool convex_hull() const { return convex_hull_; }
 
   Triangulation& triangulation() { return c3t3_.triangulation(); }
   const Triangulation& triangulation() const { return c3t3_.triangulation(); }
@@ -96,8 +105,78 @@ public:
     if(p.in_complex) c3t3_.add_to_complex(c, i, p.index);
   }
 
+  /// A new vertex at `p`; its dimension in the complex and its index follow from
+  /// where it was inserted: on the curve of edge (`a`, `b`), on a facet of `patch`,
+  /// or inside `region`. A vertex on a curve gets a weight that makes its
+  /// protecting ball meet its neighbours' (as `c3t3.is_valid()` asks).
+  template <class Bare_point>
+  Vertex_handle create_vertex(const Bare_point& p, Vertex_handle a, Vertex_handle b, const Patch& patch,
+                              const Region& region)
+  {
+    const Vertex_handle v = tds().create_vertex();
+    double weight = 0;
+    if(a != Vertex_handle() && is_curve_edge(a, b))
+    {
+      auto cp = triangulation().geom_traits().construct_point_3_object();
+      weight = (std::max)(CGAL::to_double(CGAL::squared_distance(p, cp(a->point()))),
+                          CGAL::to_double(CGAL::squared_distance(p, cp(b->point()))));
+      c3t3_.set_dimension(v, 1);
+      set_index(v, c3t3_.curve_index(a, b));
+    }
+    else if(patch.in_complex)
+    {
+      c3t3_.set_dimension(v, 2);
+      set_index(v, patch.index);
+    }
+    else
+    {
+      c3t3_.set_dimension(v, 3);
+      if(region.kind == Region_kind::mesh) set_index(v, region.subdomain);
+    }
+    v->set_point(make_point(p, weight));
+    return v;
+  }
+
+  /// After edge (`a`, `b`) was split at `e`: a curve edge becomes two.
+  void split_curve(Vertex_handle a, Vertex_handle b, Vertex_handle e)
+  {
+    if(!is_curve_edge(a, b)) return;
+    const auto curve = c3t3_.curve_index(a, b);
+    c3t3_.remove_from_complex(a, b);
+    c3t3_.add_to_complex(a, e, curve);
+    c3t3_.add_to_complex(e, b, curve);
+  }
+
+  /// The inverse of `split_curve`, before `e` goes.
+  void join_curve(Vertex_handle a, Vertex_handle e, Vertex_handle b)
+  {
+    if(!is_curve_edge(a, e)) return;
+    const auto curve = c3t3_.curve_index(a, e);
+    c3t3_.remove_from_complex(a, e);
+    c3t3_.remove_from_complex(e, b);
+    c3t3_.add_to_complex(a, b, curve);
+  }
+
 private:
+  template <class Bare_point>
+  static typename Triangulation::Point make_point(const Bare_point& p, double weight)
+  {
+    using Point = typename Triangulation::Point;
+    if constexpr(std::is_constructible<Point, Bare_point, double>::value)
+      return Point(p, weight);
+    else
+      return Point(p);
+  }
+
+  template <class T>
+  static void set_index(Vertex_handle v, const T& x)
+  {
+    using Index = typename std::decay_t<decltype(*v)>::Index;
+    if constexpr(std::is_constructible<Index, const T&>::value) v->set_index(Index(x));
+  }
+
   C3T3& c3t3_;
+  bool convex_hull_;
 };
 
 /// The same for a `Triangulation_3`: its finite cells are the mesh (one
@@ -115,6 +194,8 @@ public:
 
   explicit Triangulation_labels(Tr& tr) : tr_(tr) {}
 
+  bool convex_hull() const { return true; }
+
   Tr& triangulation() { return tr_; }
   const Tr& triangulation() const { return tr_; }
   Tds& tds() { return tr_.tds(); }
@@ -129,6 +210,20 @@ public:
   void add_cell(Cell_handle, const Region&) {}
   void remove_facet(Cell_handle, int) {}
   void add_facet(Cell_handle, int, const Patch&) {}
+
+  template <class Bare_point>
+  Vertex_handle create_vertex(const Bare_point& p, Vertex_handle, Vertex_handle, const Patch&, const Region&)
+  {
+    const Vertex_handle v = tr_.tds().create_vertex();
+    using Point = typename Tr::Point;
+    if constexpr(std::is_constructible<Point, Bare_point, double>::value)
+      v->set_point(Point(p, 0.0));
+    else
+      v->set_point(Point(p));
+    return v;
+  }
+  void split_curve(Vertex_handle, Vertex_handle, Vertex_handle) {}
+  void join_curve(Vertex_handle, Vertex_handle, Vertex_handle) {}
 
 private:
   Tr& tr_;

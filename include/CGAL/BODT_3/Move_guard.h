@@ -89,6 +89,30 @@ public:
   /// Why the full-length move of the last refused vertex was refused.
   Refusal first_refusal() const { return first_refusal_; }
 
+  /// The quality of cell `c` now.
+  double cell_quality(int c) const { return quality_[c]; }
+
+  /// The worst quality of the mesh cells around `v` now.
+  double worst_around(int v) const
+  {
+    double worst = 2;
+    for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
+    {
+      const int c = mesh_.incidences[k].cell;
+      if(mesh_.in_mesh[c]) worst = std::min(worst, quality_[c]);
+    }
+    return worst;
+  }
+
+  /// The worst quality of the mesh cells around the vertex at the position the
+  /// last successful `accepts` judged (2 without mesh cells).
+  double accepted_worst() const
+  {
+    double worst = 2;
+    for(double q : scratch_) worst = std::min(worst, q);
+    return worst;
+  }
+
   /// Whether `v` may go to `p` (see the class comment). Leaves the star's new
   /// cell qualities in a buffer that `apply` uses.
   bool accepts(int v, const Point& p)
@@ -118,12 +142,7 @@ public:
     last_refusal_ = Refusal::worsens_quality;
     if(!quality_guard_) return true;
 
-    double old_worst = 2;
-    for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
-    {
-      const int c = m.incidences[k].cell;
-      if(m.in_mesh[c]) old_worst = std::min(old_worst, quality_[c]);
-    }
+    const double old_worst = worst_around(v);
     scratch_.clear();
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {

@@ -3,6 +3,7 @@
 #ifndef CGAL_BODT_3_SMOOTHING_OPTIONS_H
 #define CGAL_BODT_3_SMOOTHING_OPTIONS_H
 
+#include <CGAL/BODT_3/Bad_tet_shape.h>
 #include <CGAL/BODT_3/Tensor_voting.h>
 #include <CGAL/BODT_3/tet_quality.h>
 
@@ -35,6 +36,16 @@ struct Flip_options
   int max_faces = 10;   // multi-face removal: largest sandwich explored
 };
 
+/// How the insertion passes work (see insertion_pass.h).
+struct Insertion_options
+{
+  /// Mesh cells whose minimum dihedral sine is below this (0.34: a dihedral angle
+  /// below 20 or above 160 degrees) and that are spades, caps or slivers get split.
+  double quality_threshold = 0.34;
+  Bad_tet_options shapes;      // short edges and margins; the angle bounds follow the threshold
+  int smoothing_rounds = 2;    // local smoothing of the new vertices and the tetrahedron's own
+};
+
 /// With `max_iteration_number = 0` (no limit), the pipeline still stops after this
 /// many iterations, so that every run ends ...
 constexpr std::size_t unlimited_iteration_cap = 1000;
@@ -61,8 +72,13 @@ struct Smoothing_options
   Flip_options flips;
   /// What decides every change (tet_quality.h); the default is justified in doc/manual.md.
   Quality_measure quality_measure = Quality_measure::min_dihedral_sine;
+  /// After each sweep, the vertices of mesh cells below this quality (by
+  /// `quality_measure`) take max-min compass steps (Smoothing_sweep::raise_worst);
+  /// 0 turns the fallback off.
+  double max_min_threshold = 0.34;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
+  Insertion_options insertion;
   /// At most this many vertices are inserted; a negative value means 5% of the
   /// input's vertices.
   long long max_vertex_insertions = -1;
@@ -126,6 +142,7 @@ struct Iteration_stats
   std::size_t refused_inverting_outside_cell = 0;   // a finite cell outside the mesh (C3T3)
   std::size_t refused_breaking_hull = 0;
   std::size_t refused_worsening_quality = 0;
+  std::size_t max_min_moves = 0;      // vertices moved by the max-min fallback
   double max_relative_move = 0;       // largest move / local size
   Topology_stats topology;            // the flip pass after the sweep
   Insertion_stats insertion;          // the insertion pass before the sweep

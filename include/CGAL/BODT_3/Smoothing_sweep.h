@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -53,7 +54,6 @@ public:
   /// One sweep; fills the move counts of `stats`.
   void run(Iteration_stats& stats)
   {
-    moved_.clear();
     Vertex_star<K> star;
     for(int v : order_.vertices)
     {
@@ -97,8 +97,78 @@ public:
     }
   }
 
-  /// The vertices the last sweep moved.
+  /// The fallback where B-ODT stalls: each movable vertex of a mesh cell whose
+  /// quality is below `threshold` takes compass steps (the directions that keep every
+  /// subdomain's volume and its feature, `Volume_preserving_move::free_directions`,
+  /// both ways, from a fifth of its shortest edge down to a thousandth) that raise
+  /// the worst cell of its star, through the guard. Needs the quality guard.
+  void raise_worst(double threshold, Iteration_stats& stats)
+  {
+    if(!opt_.quality_guard) return;
+    std::vector<int> vertices;
+    for(std::size_t c = 0; c < mesh_.cells.size(); ++c)
+      if(mesh_.in_mesh[c] && guard_.cell_quality(static_cast<int>(c)) < threshold)
+        vertices.insert(vertices.end(), mesh_.cells[c].begin(), mesh_.cells[c].end());
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    Vertex_star<K> star;
+    Vector dirs[3];
+    for(int v : vertices)
+    {
+      const Vertex_kind kind = cls_.kind[v];
+      if(kind == Vertex_kind::fixed) continue;
+      mesh_.gather_star(v, star);
+      Vector direction(0, 0, 0);
+      if(kind == Vertex_kind::feature)
+      {
+        const auto& nb = cls_.curve_neighbors[v];
+        direction = nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]]
+                               : tensor_vote(star, opt_.tensor_voting).direction;
+      }
+      const int n = mover_.free_directions(star, kind, direction, dirs);
+      if(n == 0) continue;
+      double shortest = std::numeric_limits<double>::infinity();
+      for(const auto& c : star.cells)
+        for(const auto* p : {&c.a, &c.b, &c.c}) shortest = std::min(shortest, CGAL::squared_distance(star.x0, *p));
+      shortest = std::sqrt(shortest);
+      double worst = guard_.worst_around(v);
+      bool moved = false;
+      for(double h = 0.2 * shortest; h > 1e-3 * shortest;)
+      {
+        typename K::Point_3 best;
+        double best_worst = worst;
+        for(int d = 0; d < n; ++d)
+          for(double sign : {1.0, -1.0})
+          {
+            const typename K::Point_3 p = mesh_.points[v] + (sign * h) * dirs[d];
+            if(guard_.accepts(v, p) && guard_.accepted_worst() > best_worst)
+            {
+              best_worst = guard_.accepted_worst();
+              best = p;
+            }
+          }
+        if(best_worst > worst)
+        {
+          guard_.accepts(v, best);
+          guard_.apply(v, best);
+          worst = best_worst;
+          moved = true;
+        }
+        else
+          h *= 0.5;
+      }
+      if(!moved) continue;
+      ++stats.max_min_moves;
+      moved_.push_back(v);
+      moved_once_[v] = 1;
+      dirty_[v] = 1;
+      for(int u : dependents_[v]) dirty_[u] = 1;
+    }
+  }
+
+  /// The vertices moved since the last `forget_moves`.
   const std::vector<int>& moved() const { return moved_; }
+  void forget_moves() { moved_.clear(); }
 
   /// Distinct vertices moved so far.
   std::size_t moved_vertices() const

@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_TRIANGULATION_VIEW_H
 
 #include <CGAL/BODT_3/Mesh_labels.h>
+#include <CGAL/BODT_3/bare_point.h>
 #include <CGAL/BODT_3/Smoothing_mesh.h>
 #include <CGAL/BODT_3/Vertex_classification.h>
 
@@ -34,8 +35,7 @@ public:
   using Tr = typename Labels::Triangulation;
   using Vertex_handle = typename Tr::Vertex_handle;
   using Cell_handle = typename Tr::Cell_handle;
-  using Bare_point = std::decay_t<decltype(std::declval<typename Tr::Geom_traits>().construct_point_3_object()(
-      std::declval<typename Tr::Point>()))>;
+  using Bare_point = Bare_point_t<Tr>;
   using Kernel = typename CGAL::Kernel_traits<Bare_point>::Kernel;
   using Mesh = Smoothing_mesh<Kernel>;
 
@@ -87,33 +87,23 @@ public:
         if(it != cell_index_.end()) mesh_.neighbor[4 * c + i] = it->second;
       }
     mesh_.hull_checks.clear();
-    add_hull_checks();
+    if(labels_.convex_hull()) add_hull_checks();
     mesh_.build_incidences();
   }
 
   /// Writes the positions of `mesh()` back into the triangulation.
   void write_back()
   {
-    for(std::size_t i = 0; i < handles_.size(); ++i) set_bare_point(handles_[i], mesh_.points[i]);
+    for(std::size_t i = 0; i < handles_.size(); ++i) set_bare_point(labels_.triangulation(), handles_[i], mesh_.points[i]);
+  }
+
+  /// Re-reads the positions from the triangulation (after moves made on it directly).
+  void read_points()
+  {
+    for(std::size_t i = 0; i < handles_.size(); ++i) mesh_.points[i] = bare_point(labels_.triangulation(), handles_[i]);
   }
 
 private:
-  template <class P = typename Tr::Point>
-  static std::enable_if_t<std::is_same<P, Bare_point>::value> set_bare(Vertex_handle v, const Bare_point& p)
-  {
-    v->set_point(p);
-  }
-  template <class P = typename Tr::Point>
-  static std::enable_if_t<!std::is_same<P, Bare_point>::value> set_bare(Vertex_handle v, const Bare_point& p)
-  {
-    v->set_point(P(p, v->point().weight()));
-  }
-  void set_bare_point(Vertex_handle v, const Bare_point& p)
-  {
-    auto cp = labels_.triangulation().geom_traits().construct_point_3_object();
-    if(cp(v->point()) != p) set_bare(v, p);
-  }
-
   // For each hull facet and each of its three neighbours on the hull, the far
   // vertex of the neighbour must stay on the inner side of the facet's plane;
   // checks that do not hold now (a hull that is not convex there) are left out.

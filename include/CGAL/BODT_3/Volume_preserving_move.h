@@ -38,30 +38,9 @@ struct Volume_preserving_move
     const Vector zero(0, 0, 0);
     if(kind == Vertex_kind::fixed || star.cells.empty()) return zero;
     if(kind == Vertex_kind::interior) return Odt_move()(star);
-
-    // Orthonormal basis of span{n_j}. A normal that vanishes (a part surrounding
-    // x0) or repeats another up to round-off (two sides of an interface) adds no
-    // direction: residuals below 1e-9 of the star's total face area are dropped.
-    double area_scale = 0;
-    for(const auto& cell : star.cells)
-      area_scale += 0.5 * std::sqrt(CGAL::cross_product(cell.b - cell.a, cell.c - cell.a).squared_length());
     Vector basis[3];
-    int rank = 0;
-    int seen[8];
-    int nseen = 0;
-    for(const auto& cell : star.cells)
-    {
-      bool known = false;
-      for(int i = 0; i < nseen; ++i) known = known || seen[i] == cell.subdomain;
-      if(known) continue;
-      if(nseen == 8) return zero;   // eight subdomains at one point: leave it
-      seen[nseen++] = cell.subdomain;
-      Vector n = star.subdomain_normal(cell.subdomain);
-      for(int i = 0; i < rank; ++i) n = n - (n * basis[i]) * basis[i];
-      const double res = std::sqrt(n.squared_length());
-      if(res > 1e-9 * area_scale && rank < 3) basis[rank++] = n / res;
-    }
-
+    const int rank = normal_basis(star, basis);
+    if(rank < 0) return zero;
     if(rank == 0)
       return kind == Vertex_kind::feature ? Bodt_feature_move()(star, feature_direction) : Odt_move()(star);
     if(rank == 1)
@@ -73,14 +52,87 @@ struct Volume_preserving_move
     if(rank == 2)
     {
       const Vector line = CGAL::cross_product(basis[0], basis[1]);
-      if(kind == Vertex_kind::feature)
-      {
-        const double len = std::sqrt(feature_direction.squared_length());
-        if(!(len > 0) || std::abs(feature_direction * line) < 0.5 * len) return zero;
-      }
+      if(kind == Vertex_kind::feature && !along(feature_direction, line)) return zero;
       return Bodt_feature_move()(star, line);
     }
     return zero;
+  }
+
+  /// An orthonormal basis of the moves that keep every subdomain's volume and the
+  /// vertex on its feature: what the closed forms above minimize over. Returns how
+  /// many directions: 3 inside a subdomain, 2 on a surface, 1 along a feature or a
+  /// junction, 0 for a vertex that cannot move.
+  template <class K>
+  int free_directions(const Vertex_star<K>& star, Vertex_kind kind, const typename K::Vector_3& feature_direction,
+                      typename K::Vector_3 out[3]) const
+  {
+    using Vector = typename K::Vector_3;
+    if(kind == Vertex_kind::fixed || star.cells.empty()) return 0;
+    Vector basis[3];
+    const int rank = kind == Vertex_kind::interior ? 0 : normal_basis(star, basis);
+    if(rank < 0 || rank == 3) return 0;
+    auto unit = [](const Vector& v) { return v / std::sqrt(v.squared_length()); };
+    if(kind == Vertex_kind::feature || rank == 2)
+    {
+      Vector d = rank == 2 ? CGAL::cross_product(basis[0], basis[1]) : feature_direction;
+      for(int i = 0; i < rank && rank < 2; ++i) d = d - (d * basis[i]) * basis[i];
+      if(kind == Vertex_kind::feature && rank == 2 && !along(feature_direction, d)) return 0;
+      if(!(d.squared_length() > 0)) return 0;
+      out[0] = unit(d);
+      return 1;
+    }
+    if(rank == 0)
+    {
+      out[0] = Vector(1, 0, 0);
+      out[1] = Vector(0, 1, 0);
+      out[2] = Vector(0, 0, 1);
+      return 3;
+    }
+    // The tangent plane of basis[0].
+    const Vector n = basis[0];
+    const Vector a = std::abs(n.x()) < 0.6 ? Vector(1, 0, 0) : Vector(0, 1, 0);
+    out[0] = unit(a - (a * n) * n);
+    out[1] = CGAL::cross_product(n, out[0]);
+    return 2;
+  }
+
+private:
+  // Orthonormal basis of span{n_j}, the (B.1) normals of the subdomains of the
+  // star. A normal that vanishes (a part surrounding x0) or repeats another up to
+  // round-off (two sides of an interface) adds no direction: residuals below 1e-9
+  // of the star's total face area are dropped. -1 for eight subdomains or more.
+  template <class K>
+  static int normal_basis(const Vertex_star<K>& star, typename K::Vector_3 basis[3])
+  {
+    using Vector = typename K::Vector_3;
+    double area_scale = 0;
+    for(const auto& cell : star.cells)
+      area_scale += 0.5 * std::sqrt(CGAL::cross_product(cell.b - cell.a, cell.c - cell.a).squared_length());
+    int rank = 0;
+    int seen[8];
+    int nseen = 0;
+    for(const auto& cell : star.cells)
+    {
+      bool known = false;
+      for(int i = 0; i < nseen; ++i) known = known || seen[i] == cell.subdomain;
+      if(known) continue;
+      if(nseen == 8) return -1;   // eight subdomains at one point: leave it
+      seen[nseen++] = cell.subdomain;
+      Vector n = star.subdomain_normal(cell.subdomain);
+      for(int i = 0; i < rank; ++i) n = n - (n * basis[i]) * basis[i];
+      const double res = std::sqrt(n.squared_length());
+      if(res > 1e-9 * area_scale && rank < 3) basis[rank++] = n / res;
+    }
+    return rank;
+  }
+
+  // Whether a feature direction follows the junction line n_1 x n_2 (whose length
+  // is the sine between the normals): |d . line| >= |d| / 2.
+  template <class Vector>
+  static bool along(const Vector& feature_direction, const Vector& line)
+  {
+    const double len = std::sqrt(feature_direction.squared_length());
+    return len > 0 && std::abs(feature_direction * line) >= 0.5 * len;
   }
 };
 

@@ -8,11 +8,13 @@
 #include <CGAL/BODT_3/Triangulation_view.h>
 #include <CGAL/BODT_3/Vertex_classification.h>
 #include <CGAL/BODT_3/flip_pass.h>
+#include <CGAL/BODT_3/insertion_pass.h>
 #include <CGAL/BODT_3/tet_quality.h>
 
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -83,6 +85,52 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   Flip_history history;
   std::vector<std::size_t> changed_at(mesh.number_of_vertices(), 0);   // per vertex: when it last moved or flipped
 
+  // Insertion: its budget, and how existing vertices move, by their view id.
+  using Vertex_handle = typename Labels::Vertex_handle;
+  std::size_t budget = opt.max_vertex_insertions >= 0
+                           ? static_cast<std::size_t>(opt.max_vertex_insertions)
+                           : static_cast<std::size_t>(std::ceil(0.05 * double(mesh.number_of_vertices())));
+  if(!opt.vertex_insertion || opt.moving_vertices == Moving_vertices::NONE) budget = 0;
+  Flip_history insertion_history;
+  std::vector<Added_vertex<Vertex_handle>> added;
+  auto motion = [&](Vertex_handle v) {
+    const int id = view.index(v);
+    Vertex_motion<Vertex_handle> m;
+    m.kind = cls.kind[id];
+    if(cls.curve_neighbors[id][0] >= 0)
+    {
+      m.a = view.vertices()[cls.curve_neighbors[id][0]];
+      m.b = view.vertices()[cls.curve_neighbors[id][1]];
+    }
+    return m;
+  };
+  // The last change within one edge of each vertex, for a pass's history.
+  auto stamp_regions = [&](Flip_history& h) {
+    h.region_stamp = changed_at;
+    for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+      for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
+        for(int u : mesh.incidences[k].face) h.region_stamp[v] = std::max(h.region_stamp[v], changed_at[u]);
+  };
+  // After the triangulation changed: re-read it, classify new vertices, mark stars changed.
+  auto reread = [&]() {
+    view.refresh();
+    view.read_points();
+    cls.kind.resize(mesh.number_of_vertices(), Vertex_kind::fixed);
+    cls.curve_neighbors.resize(mesh.number_of_vertices(), {-1, -1});
+    for(const auto& a : added)
+    {
+      const int id = view.index(a.vertex);
+      cls.kind[id] = a.kind;
+      if(a.a != Vertex_handle()) cls.curve_neighbors[id] = {view.index(a.a), view.index(a.b)};
+    }
+    changed.clear();
+    for(auto v : touched)
+      if(!labels.triangulation().is_infinite(v)) changed.push_back(view.index(v));
+    changed_at.resize(mesh.number_of_vertices(), history.clock);
+    for(int v : changed) changed_at[v] = history.clock;
+    sweep.refresh(changed);
+  };
+
   const bool unlimited = opt.max_iteration_number == 0;
   const std::size_t last = unlimited ? unlimited_iteration_cap : opt.max_iteration_number;
   const double convergence = unlimited && opt.convergence == 0 ? unlimited_convergence : opt.convergence;
@@ -94,6 +142,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     if(opt.moving_vertices != Moving_vertices::NONE)
     {
       const double start = timer.time();
+      sweep.forget_moves();
       sweep.run(stats);
       view.write_back();
       ++history.clock;
@@ -103,28 +152,41 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     if(opt.topology_optimization)
     {
       history.pass = it;
-      history.region_stamp = changed_at;
-      for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
-        for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
-          for(int u : mesh.incidences[k].face) history.region_stamp[v] = std::max(history.region_stamp[v], changed_at[u]);
+      stamp_regions(history);
       touched.clear();
+      added.clear();
       stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure);
-      if(stats.topology.total() > 0)
-      {
-        view.refresh();
-        changed.clear();
-        for(auto v : touched)
-          if(!labels.triangulation().is_infinite(v)) changed.push_back(view.index(v));
-        changed_at.resize(mesh.number_of_vertices(), history.clock);
-        for(int v : changed) changed_at[v] = history.clock;
-        sweep.refresh(changed);
-      }
+      if(stats.topology.total() > 0) reread();
+    }
+    if(opt.moving_vertices != Moving_vertices::NONE && opt.max_min_threshold > 0)
+    {
+      // After the flips, which remove most flat tetrahedra better than moves can.
+      sweep.forget_moves();
+      sweep.raise_worst(opt.max_min_threshold, stats);
+      view.write_back();
+      ++history.clock;
+      for(int v : sweep.moved()) changed_at[v] = history.clock;
+    }
+    if(budget > 0)
+    {
+      touched.clear();
+      added.clear();
+      insertion_history.pass = it;
+      insertion_history.clock = history.clock;
+      stamp_regions(insertion_history);
+      stats.insertion = insertion_pass(labels, opt.insertion, bounds, opt.quality_measure, opt.tensor_voting, budget,
+                                       opt.moving_vertices == Moving_vertices::ALL, motion, vertex_id, added,
+                                       touched, &insertion_history);
+      budget -= stats.insertion.vertices_added;
+      history.clock = insertion_history.clock;
+      if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread();
     }
     result.topology += stats.topology;
+    result.insertion += stats.insertion;
     stats.seconds = timer.time();
     result.iterations = it;
     visitor.after_iteration(stats);
-    const bool flipped = stats.topology.total() > 0;
+    const bool flipped = stats.topology.total() > 0 || stats.insertion.vertices_added > 0;
     if(stats.moved == 0 && !flipped) { result.code = CANT_IMPROVE_ANYMORE; break; }
     if(convergence > 0 && stats.max_relative_move < convergence && !flipped)
     {

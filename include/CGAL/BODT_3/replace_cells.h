@@ -70,11 +70,17 @@ std::array<Vertex_handle, 3> sorted_key(std::array<Vertex_handle, 3> f)
 /// (facets between new cells) enter the complex. Old facets of the complex inside
 /// the group leave it. Vertices keep pointing to live cells. The new cells are
 /// appended to `created` when it is given, in the order of `new_cells`.
+///
+/// For undoing a split, `regions` (when given) replaces the old cells' regions as
+/// what `region_of` indexes, and the vertices in `removed` may (must) disappear:
+/// they are deleted from the triangulation.
 template <class Labels>
 bool replace_cells(Labels& labels, const std::vector<typename Labels::Cell_handle>& old_cells,
                    const std::vector<New_cell<typename Labels::Vertex_handle>>& new_cells,
                    const std::vector<New_facet<typename Labels::Vertex_handle, typename Labels::Patch>>& new_facets,
-                   std::vector<typename Labels::Cell_handle>* created = nullptr)
+                   std::vector<typename Labels::Cell_handle>* created = nullptr,
+                   const std::vector<typename Labels::Region>* regions = nullptr,
+                   const std::vector<typename Labels::Vertex_handle>& removed = {})
 {
   using Vertex_handle = typename Labels::Vertex_handle;
   using Cell_handle = typename Labels::Cell_handle;
@@ -149,7 +155,8 @@ bool replace_cells(Labels& labels, const std::vector<typename Labels::Cell_handl
     bool kept = false;
     for(std::size_t k = 0; k < nn && !kept; ++k)
       kept = std::find(new_cells[k].vertices.begin(), new_cells[k].vertices.end(), v) != new_cells[k].vertices.end();
-    if(!kept) return false;
+    const bool goes = std::find(removed.begin(), removed.end(), v) != removed.end();
+    if(kept == goes) return false;
   }
   std::vector<int> facet_of_new_facet(new_facets.size(), -1);
   for(std::size_t f = 0; f < new_facets.size(); ++f)
@@ -173,10 +180,10 @@ bool replace_cells(Labels& labels, const std::vector<typename Labels::Cell_handl
     boundary_patch[b] = labels.patch(boundary[b].old_cell, boundary[b].old_index);
     labels.remove_facet(boundary[b].old_cell, boundary[b].old_index);
   }
-  std::vector<typename Labels::Region> regions;
+  std::vector<typename Labels::Region> old_regions;
   for(Cell_handle c : old_cells)
   {
-    regions.push_back(labels.region(c));
+    old_regions.push_back(labels.region(c));
     for(int i = 0; i < 4; ++i)
       if(is_old(c->neighbor(i))) labels.remove_facet(c, i);
   }
@@ -205,8 +212,10 @@ bool replace_cells(Labels& labels, const std::vector<typename Labels::Cell_handl
   for(std::size_t k = 0; k < nn; ++k)
     for(int i = 0; i < 4; ++i) cells[k]->vertex(i)->set_cell(cells[k]);
   for(Cell_handle c : old_cells) tds.delete_cell(c);
+  for(Vertex_handle v : removed) tds.delete_vertex(v);
 
-  for(std::size_t k = 0; k < nn; ++k) labels.add_cell(cells[k], regions[new_cells[k].region_of]);
+  const auto& region = regions ? *regions : old_regions;
+  for(std::size_t k = 0; k < nn; ++k) labels.add_cell(cells[k], region[new_cells[k].region_of]);
   for(std::size_t k = 0; k < nn; ++k)
     for(int i = 0; i < 4; ++i)
       if(outer[k][i] >= 0) labels.add_facet(cells[k], i, boundary_patch[outer[k][i]]);

@@ -47,7 +47,8 @@ smooth(Tr& tr, const Smoothing_options& options, Visitor&& visitor = Visitor())
 /// mesh (unless all are), but stay valid; `Edges`, `Corners`, `RequiredVertices`
 /// and triangle labels give the features, and tensor voting is used when none is
 /// given. The mesh becomes a `Tet_mesh_c3t3` (tet_mesh_to_c3t3), goes through the
-/// same pipeline, and comes back with `update_tet_mesh`. Throws `Mesh_io_error` for
+/// same pipeline, and comes back with `update_tet_mesh`. Its infinite cells only
+/// close the mesh, so its boundary need not stay convex where it is. Throws `Mesh_io_error` for
 /// a mesh no triangulation can hold.
 template <class Visitor = Null_smoothing_visitor>
 Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&& visitor = Visitor())
@@ -71,7 +72,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   Tet_mesh_c3t3 c3t3;
   std::vector<Tet_mesh_c3t3::Vertex_handle> handles;
   tet_mesh_to_c3t3(tm, c3t3, std::string(), &handles);
-  C3t3_labels<Tet_mesh_c3t3> labels(c3t3);
+  C3t3_labels<Tet_mesh_c3t3> labels(c3t3, false);
   auto classify = [&](const auto& view, const Classification_options& opt) {
     const Vertex_classification by_file = classify_vertices(flat, hints, opt);
     Vertex_classification cls;
