@@ -5,7 +5,8 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(build-essential cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev
-          libgmp-dev libmpfr-dev libtbb-dev libgtest-dev googletest zlib1g-dev chromium)
+          libgmp-dev libmpfr-dev libtbb-dev libgtest-dev googletest zlib1g-dev chromium
+          gmsh tetgen python3-meshio)   # the I/O tests read files these tools write
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -171,18 +171,23 @@ public:
         if(version_ == 22) read_elements_22(line); else read_elements_41(line);
       }
       else if(name == "Entities" && version_ == 41)
+      {
+        if(have_entities_) in_.error("a second '$Entities' section");
+        have_entities_ = true;
         read_entities(line);
+      }
       else
         skip_section(name, line);
     }
     if(!have_nodes) throw Mesh_io_error(src_.file, 0, "the file has no '$Nodes' section");
     if(!have_elements) throw Mesh_io_error(src_.file, 0, "the file has no '$Elements' section");
 
-    // Version 4.1 labels come from entities, which need not precede the elements.
+    // Version 4.1 labels come from entities, which need not precede the elements. A
+    // file without $Entities (meshio writes such files) has its label in the entity tag.
     for(const Block& b : blocks_)
     {
       auto it = entity_physical_.find({b.dim, b.tag});
-      const int label = it == entity_physical_.end() ? 0 : it->second;
+      const int label = !have_entities_ ? b.tag : it == entity_physical_.end() ? 0 : it->second;
       std::vector<int>& labels = b.type == 4 ? mesh_.tet_labels
                                  : b.type == 2 ? mesh_.triangle_labels : mesh_.edge_labels;
       std::fill_n(labels.begin() + static_cast<std::ptrdiff_t>(b.first), b.count, label);
@@ -813,6 +818,7 @@ private:
   Tet_mesh_source src_;
   int version_ = 0;
   bool binary_ = false;
+  bool have_entities_ = false;
   std::vector<long long> node_tags_;
   Node_index index_;
   std::map<std::pair<int, int>, int> entity_physical_;   // first physical tag of a 4.1 entity
@@ -1086,7 +1092,8 @@ inline Tet_mesh parse(const std::string& file, std::string_view bytes, std::ostr
 /// Labels: in version 2.2, an element's first tag (its physical tag, 0 without
 /// tags). In version 4.1, the first physical tag of the element's entity, or 0
 /// when the entity has none: elements in no physical group are unlabelled, as
-/// Medit's label 0 says; `write_gmsh` relies on this to write label 0.
+/// Medit's label 0 says; `write_gmsh` relies on this to write label 0. A 4.1 file
+/// without `$Entities` (as meshio writes them) gives each element its entity tag.
 ///
 /// Throws `Mesh_io_error` ("file:line: what is wrong", or "file: at byte N: ..."
 /// inside binary data) on any defect, including those `check_and_orient` finds.
