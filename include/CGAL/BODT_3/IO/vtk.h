@@ -318,30 +318,37 @@ private:
     in_.rest_of_line();
     bin_.seek(std::min(in_.position() + 1, in_.text().size()), "binary data");
     bin_.check_count("the number of values", n, size);
-    v.reserve(n);
-    for(std::size_t i = 0; i < n; ++i) v.push_back(binary_value<T>(type));
+    v.resize(n);
+    // The type is decided once per array, not per value.
+    const std::string& t = type;
+    if(t == "double") fill<double>(v);
+    else if(t == "float") fill<float>(v);
+    else if(t == "unsigned_char") fill<std::uint8_t>(v);
+    else if(t == "char") fill<std::int8_t>(v);
+    else if(t == "unsigned_short") fill<std::uint16_t>(v);
+    else if(t == "short") fill<std::int16_t>(v);
+    else if(t == "unsigned_int") fill<std::uint32_t>(v);
+    else if(t == "int") fill<std::int32_t>(v);
+    else if(t == "unsigned_long" || t == "vtktypeuint64") fill<std::uint64_t>(v);
+    else fill<std::int64_t>(v);
     in_.set_position(bin_.position(), in_.current_line() + 1);
     return v;
   }
 
-  template <class T>
-  T binary_value(const std::string& t)
+  template <class S, class T>
+  void fill(std::vector<T>& v)
   {
-    if(t == "double") return checked<T>(bin_.get<double>("a value"));
-    if(t == "float") return checked<T>(static_cast<double>(bin_.get<float>("a value")));
-    if(t == "unsigned_char") return static_cast<T>(bin_.get<std::uint8_t>("a value"));
-    if(t == "char") return static_cast<T>(bin_.get<std::int8_t>("a value"));
-    if(t == "unsigned_short") return static_cast<T>(bin_.get<std::uint16_t>("a value"));
-    if(t == "short") return static_cast<T>(bin_.get<std::int16_t>("a value"));
-    if(t == "unsigned_int") return static_cast<T>(bin_.get<std::uint32_t>("a value"));
-    if(t == "int") return static_cast<T>(bin_.get<std::int32_t>("a value"));
-    if(t == "unsigned_long" || t == "vtktypeuint64")
+    for(T& x : v)
     {
-      const std::uint64_t u = bin_.get<std::uint64_t>("a value");
-      if(u > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) bin_.error("a value is out of range");
-      return static_cast<T>(u);
+      const S s = bin_.get<S>("a value");
+      if constexpr(std::is_floating_point_v<S>) x = checked<T>(static_cast<double>(s));
+      else if constexpr(std::is_same_v<S, std::uint64_t>)
+      {
+        if(s > static_cast<std::uint64_t>(std::numeric_limits<long long>::max())) bin_.error("a value is out of range");
+        x = static_cast<T>(s);
+      }
+      else x = static_cast<T>(s);
     }
-    return static_cast<T>(bin_.get<std::int64_t>("a value"));
   }
 
   template <class T>

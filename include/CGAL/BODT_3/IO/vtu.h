@@ -438,9 +438,19 @@ private:
       if(s == 0) error(a.tag, what + " has type '" + printable(a.type) + "', which this reader does not know");
       if(bytes.size() % s != 0)
         error(a.tag, what + " holds " + std::to_string(bytes.size()) + " bytes, not a multiple of its value size");
-      v.reserve(bytes.size() / s);
-      for(std::size_t i = 0; i < bytes.size(); i += s)
-        v.push_back(convert<T>(a, bytes.data() + i));
+      v.resize(bytes.size() / s);
+      // The type is decided once per array, not per value.
+      const std::string_view t = a.type;
+      if(t == "Float64") convert<double>(a, bytes, v);
+      else if(t == "Float32") convert<float>(a, bytes, v);
+      else if(t == "Int8") convert<std::int8_t>(a, bytes, v);
+      else if(t == "UInt8") convert<std::uint8_t>(a, bytes, v);
+      else if(t == "Int16") convert<std::int16_t>(a, bytes, v);
+      else if(t == "UInt16") convert<std::uint16_t>(a, bytes, v);
+      else if(t == "Int32") convert<std::int32_t>(a, bytes, v);
+      else if(t == "UInt32") convert<std::uint32_t>(a, bytes, v);
+      else if(t == "Int64") convert<std::int64_t>(a, bytes, v);
+      else convert<std::uint64_t>(a, bytes, v);
     }
     if(expected != std::size_t(-1) && v.size() != expected)
       error(a.tag, what + " holds " + std::to_string(v.size()) + " values, but " + std::to_string(expected) +
@@ -456,23 +466,21 @@ private:
     return swap_ ? BODT_3::internal::byte_swapped(s) : s;
   }
 
-  template <class T>
-  T convert(const Array& a, const unsigned char* p)
+  template <class S, class T>
+  void convert(const Array& a, const std::vector<unsigned char>& bytes, std::vector<T>& v)
   {
-    const std::string_view t = a.type;
-    if(t == "Float64") return to<T>(a, load<double>(p));
-    if(t == "Float32") return to<T>(a, static_cast<double>(load<float>(p)));
-    if(t == "Int8") return static_cast<T>(load<std::int8_t>(p));
-    if(t == "UInt8") return static_cast<T>(load<std::uint8_t>(p));
-    if(t == "Int16") return static_cast<T>(load<std::int16_t>(p));
-    if(t == "UInt16") return static_cast<T>(load<std::uint16_t>(p));
-    if(t == "Int32") return static_cast<T>(load<std::int32_t>(p));
-    if(t == "UInt32") return static_cast<T>(load<std::uint32_t>(p));
-    if(t == "Int64") return static_cast<T>(load<std::int64_t>(p));
-    const std::uint64_t u = load<std::uint64_t>(p);
-    if(u > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
-      error(a.tag, "data array '" + printable(a.name) + "' holds " + std::to_string(u) + ", out of range");
-    return static_cast<T>(u);
+    for(std::size_t i = 0; i < v.size(); ++i)
+    {
+      const S s = load<S>(bytes.data() + i * sizeof(S));
+      if constexpr(std::is_floating_point_v<S>) v[i] = to<T>(a, static_cast<double>(s));
+      else if constexpr(std::is_same_v<S, std::uint64_t>)
+      {
+        if(s > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
+          error(a.tag, "data array '" + printable(a.name) + "' holds " + std::to_string(s) + ", out of range");
+        v[i] = static_cast<T>(s);
+      }
+      else v[i] = static_cast<T>(s);
+    }
   }
 
   template <class T>
