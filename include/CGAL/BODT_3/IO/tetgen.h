@@ -222,51 +222,74 @@ inline Tet_mesh read_tetgen(const std::string& path, std::ostream& warnings = st
   return parse(t, warnings);
 }
 
+namespace internal_tetgen {
+
+inline void write_node(std::ostream& s, const Tet_mesh& mesh)
+{
+  BODT_3::internal::Output_buffer out(s);
+  out.put_int(mesh.points.size()).put(" 3 0 1\n");
+  for(std::size_t i = 0; i < mesh.points.size(); ++i)
+  {
+    const auto& p = mesh.points[i];
+    out.put_int(i + 1).put(' ').put_double(p.x()).put(' ').put_double(p.y()).put(' ').put_double(p.z()).put(' ');
+    out.put_int(i < mesh.vertex_refs.size() ? mesh.vertex_refs[i] : 0).put('\n');
+  }
+}
+
+inline void write_ele(std::ostream& s, const Tet_mesh& mesh)
+{
+  BODT_3::internal::Output_buffer out(s);
+  out.put_int(mesh.tets.size()).put(" 4 1\n");
+  for(std::size_t i = 0; i < mesh.tets.size(); ++i)
+  {
+    out.put_int(i + 1);
+    for(int v : mesh.tets[i]) out.put(' ').put_int(v + 1);
+    out.put(' ').put_int(mesh.tet_labels[i]).put('\n');
+  }
+}
+
+inline void write_face(std::ostream& s, const Tet_mesh& mesh)
+{
+  BODT_3::internal::Output_buffer out(s);
+  out.put_int(mesh.triangles.size()).put(" 1\n");
+  for(std::size_t i = 0; i < mesh.triangles.size(); ++i)
+  {
+    out.put_int(i + 1);
+    for(int v : mesh.triangles[i]) out.put(' ').put_int(v + 1);
+    out.put(' ').put_int(mesh.triangle_labels[i]).put('\n');
+  }
+}
+
+inline void write_edge(std::ostream& s, const Tet_mesh& mesh)
+{
+  BODT_3::internal::Output_buffer out(s);
+  out.put_int(mesh.edges.size()).put(" 1\n");
+  for(std::size_t i = 0; i < mesh.edges.size(); ++i)
+    out.put_int(i + 1).put(' ').put_int(mesh.edges[i][0] + 1).put(' ').put_int(mesh.edges[i][1] + 1).put(' ')
+       .put_int(mesh.edge_labels[i]).put('\n');
+}
+
+inline void write(std::ostream& node, std::ostream& ele, std::ostream& face, std::ostream& edge, const Tet_mesh& mesh)
+{
+  write_node(node, mesh);
+  write_ele(ele, mesh);
+  write_face(face, mesh);
+  write_edge(edge, mesh);
+}
+
+} // namespace internal_tetgen
+
 /// Writes `mesh` as TetGen files `BASE.node` (vertex references as boundary
 /// markers), `BASE.ele` (labels as one region attribute), `BASE.face` and
 /// `BASE.edge` (labels as boundary markers), numbered from 1; `path` is any of
 /// them or BASE. Each file is written atomically.
 inline void write_tetgen(const std::string& path, const Tet_mesh& mesh)
 {
-  using BODT_3::internal::Output_buffer;
   const std::string base = internal_tetgen::base_name(path);
-  write_atomically(base + ".node", [&](std::ostream& s) {
-    Output_buffer out(s);
-    out.put_int(mesh.points.size()).put(" 3 0 1\n");
-    for(std::size_t i = 0; i < mesh.points.size(); ++i)
-    {
-      const auto& p = mesh.points[i];
-      out.put_int(i + 1).put(' ').put_double(p.x()).put(' ').put_double(p.y()).put(' ').put_double(p.z()).put(' ');
-      out.put_int(i < mesh.vertex_refs.size() ? mesh.vertex_refs[i] : 0).put('\n');
-    }
-  });
-  write_atomically(base + ".ele", [&](std::ostream& s) {
-    Output_buffer out(s);
-    out.put_int(mesh.tets.size()).put(" 4 1\n");
-    for(std::size_t i = 0; i < mesh.tets.size(); ++i)
-    {
-      out.put_int(i + 1);
-      for(int v : mesh.tets[i]) out.put(' ').put_int(v + 1);
-      out.put(' ').put_int(mesh.tet_labels[i]).put('\n');
-    }
-  });
-  write_atomically(base + ".face", [&](std::ostream& s) {
-    Output_buffer out(s);
-    out.put_int(mesh.triangles.size()).put(" 1\n");
-    for(std::size_t i = 0; i < mesh.triangles.size(); ++i)
-    {
-      out.put_int(i + 1);
-      for(int v : mesh.triangles[i]) out.put(' ').put_int(v + 1);
-      out.put(' ').put_int(mesh.triangle_labels[i]).put('\n');
-    }
-  });
-  write_atomically(base + ".edge", [&](std::ostream& s) {
-    Output_buffer out(s);
-    out.put_int(mesh.edges.size()).put(" 1\n");
-    for(std::size_t i = 0; i < mesh.edges.size(); ++i)
-      out.put_int(i + 1).put(' ').put_int(mesh.edges[i][0] + 1).put(' ').put_int(mesh.edges[i][1] + 1).put(' ')
-         .put_int(mesh.edge_labels[i]).put('\n');
-  });
+  write_atomically(base + ".node", [&](std::ostream& s) { internal_tetgen::write_node(s, mesh); });
+  write_atomically(base + ".ele", [&](std::ostream& s) { internal_tetgen::write_ele(s, mesh); });
+  write_atomically(base + ".face", [&](std::ostream& s) { internal_tetgen::write_face(s, mesh); });
+  write_atomically(base + ".edge", [&](std::ostream& s) { internal_tetgen::write_edge(s, mesh); });
 }
 
 } // namespace IO
