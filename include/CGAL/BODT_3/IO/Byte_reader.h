@@ -40,7 +40,6 @@ public:
   std::string_view bytes() const { return bytes_; }
   std::size_t position() const { return pos_; }
   std::size_t remaining() const { return bytes_.size() - pos_; }
-  bool swapped() const { return swap_; }
   void set_swap(bool swap) { swap_ = swap; }
 
   void seek(std::size_t pos, const char* what)

@@ -66,13 +66,6 @@ public:
     return *this;
   }
 
-  Output_buffer& put_float(float v)
-  {
-    room(32);
-    n_ = static_cast<std::size_t>(std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
-    return *this;
-  }
-
   /// The bytes of `v` as the machine holds them (little-endian on the machines we build for).
   template <class T>
   Output_buffer& put_binary(const T& v)

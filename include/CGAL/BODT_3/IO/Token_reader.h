@@ -151,17 +151,6 @@ public:
     return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z');
   }
 
-  /// Looks at the next token without consuming it ("" at the end of the file).
-  std::string_view peek()
-  {
-    const std::size_t p = pos_;
-    const long l = line_, tl = token_line_;
-    const std::string_view previous = last_;
-    const std::string_view t = at_end() ? std::string_view() : next("a token");
-    pos_ = p; line_ = l; token_line_ = tl; last_ = previous;
-    return t;
-  }
-
   /// The rest of the current line, without surrounding blanks (for line-oriented formats).
   std::string_view rest_of_line()
   {

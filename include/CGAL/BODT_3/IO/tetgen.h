@@ -74,8 +74,6 @@ inline int integral_label(Token_reader& in, const char* what)
   return static_cast<int>(a);
 }
 
-inline void skip_rest_of_line(Token_reader& in) { in.rest_of_line(); }
-
 inline Tet_mesh parse(const Texts& t, std::ostream& warnings)
 {
   Tet_mesh mesh;
@@ -163,7 +161,7 @@ inline Tet_mesh parse(const Texts& t, std::ostream& warnings)
       for(int& x : v) x = index(in, base, mesh.points.size(), "face", i);
       mesh.triangles.push_back(v);
       mesh.triangle_labels.push_back(markers ? in.next_int("a boundary marker") : 0);
-      skip_rest_of_line(in);   // TetGen's -nn adds the adjacent tetrahedra
+      in.rest_of_line();   // TetGen's -nn adds the adjacent tetrahedra
     }
   }
   if(!t.edge_file.empty())
@@ -179,7 +177,7 @@ inline Tet_mesh parse(const Texts& t, std::ostream& warnings)
       for(int& x : v) x = index(in, base, mesh.points.size(), "edge", i);
       mesh.edges.push_back(v);
       mesh.edge_labels.push_back(markers ? in.next_int("a boundary marker") : 0);
-      skip_rest_of_line(in);
+      in.rest_of_line();
     }
   }
   check_and_orient(mesh, src, warnings);
