@@ -193,18 +193,18 @@ TEST(InputSafety, DevZeroIsRefusedAtOnce)
 
 TEST(InputSafety, HugeGarbageFileIsRefusedWithoutReadingIt)
 {
-  // An 8 GiB sparse file of zero bytes, and one whose header is right but whose
+  // A 5 GiB sparse file of zero bytes (past 32-bit sizes), and one whose header is right but whose
   // count is absurd: both fail at their first bytes, mapped, not read.
   const fs::path zeros = tmp_dir() / "huge.mesh";
   { std::ofstream(zeros) << ""; }
-  fs::resize_file(zeros, std::uintmax_t(8) << 30);
+  fs::resize_file(zeros, std::uintmax_t(5) << 30);
   std::string e = error_of(zeros.string());
   EXPECT_NE(e.find(zeros.string() + ":1: "), std::string::npos) << e;
   EXPECT_NE(e.find("not a text mesh file"), std::string::npos) << e;
 
   const fs::path counted = tmp_dir() / "counted.mesh";
   { std::ofstream(counted) << "MeshVersionFormatted 2\nDimension 3\nVertices\n4000000000000\n"; }
-  fs::resize_file(counted, std::uintmax_t(8) << 30);
+  fs::resize_file(counted, std::uintmax_t(5) << 30);
   e = error_of(counted.string());
   EXPECT_NE(e.find("more entries than the rest of the file can hold"), std::string::npos) << e;
   EXPECT_LT(peak_rss_kb(), 512 * 1024);

@@ -86,6 +86,8 @@ private:
 
 /// The temporary file being written, so that SIGINT, SIGTERM and SIGHUP can remove
 /// it before the process dies: a fixed buffer, since a signal handler may not allocate.
+/// One slot: when threads write files at the same time, only the last one started is
+/// removed on a signal.
 struct Pending_temp
 {
   char path[4096] = {};
