@@ -342,6 +342,26 @@ TEST(FormatErrors, CountsLargerThanTheFile)
   expect_read_error("count.meshb", b, "the rest of the file holds at most");
   expect_read_error("count.vtk", "# vtk DataFile Version 4.2\nx\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 1000000000 double\n\n",
                     "the rest of the file holds at most");
+  // Found by fuzzing: a binary cell count that only the cell list bounds (it made the
+  // reader reserve 266 GB).
+  std::string cells = "# vtk DataFile Version 4.2\nx\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n";
+  for(double x : {0., 0., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1.})
+  {
+    char b[8];
+    std::memcpy(b, &x, 8);
+    std::reverse(b, b + 8);
+    cells.append(b, 8);
+  }
+  cells += "\nCELLS 33333333333 5\n";
+  for(std::int32_t v : {4, 0, 1, 2, 3})
+  {
+    char b[4];
+    std::memcpy(b, &v, 4);
+    std::reverse(b, b + 4);
+    cells.append(b, 4);
+  }
+  cells += "\nCELL_TYPES 1\n";
+  expect_read_error("cells.vtk", cells, "CELLS announces 33333333333 cells, but its list holds 5 numbers");
 }
 
 TEST(FormatErrors, NotTheFormatItsNameSays)

@@ -109,6 +109,11 @@ public:
         {
           // "count i1 i2 ..." per cell, as ints.
           const std::vector<long long> list = read_values<long long>(b, "int", "a cell list entry");
+          // Each cell takes at least its size in the list: a larger count is damage, and
+          // must not size an allocation (binary counts are not bounded by the text).
+          if(a > list.size())
+            throw Mesh_io_error(in_.file(), line, "CELLS announces " + std::to_string(a) + " cells, but its list holds " +
+                                                      std::to_string(list.size()) + " numbers");
           offsets.reserve(a + 1);
           offsets.push_back(0);
           std::size_t p = 0;
