@@ -6,7 +6,8 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(build-essential cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev
           libgmp-dev libmpfr-dev libtbb-dev libgtest-dev googletest zlib1g-dev chromium
-          libcli11-dev nlohmann-json3-dev pybind11-dev python3-dev python3-numpy python3-meshio)
+          libcli11-dev nlohmann-json3-dev pybind11-dev python3-dev python3-numpy python3-meshio
+          gmsh tetgen)   # the I/O tests read files these tools write
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

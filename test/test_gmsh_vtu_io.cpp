@@ -6,6 +6,7 @@
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/IO/vtu.h>
 
+#include "io_test_meshes.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -30,44 +31,6 @@ using CGAL::BODT_3::Tet_mesh;
 using Point = Tet_mesh::Point;
 
 namespace {
-
-// A 3x3x3 grid of perturbed cubes, six tetrahedra each, whose coordinates need all
-// 17 digits; labels 0, 1 and 2 in runs, boundary triangles and edges with labels
-// 0, 10 and -3, the eight corners, and ridges and required vertices for Medit.
-Tet_mesh grid_mesh()
-{
-  const int n = 3;
-  Tet_mesh m = bodt_test::cube_grid(n, [](int i, int j, int k) { return (i + j + k) % 3; });
-  auto vid = [&](int i, int j, int k) { return bodt_test::grid_index(n, i, j, k); };
-  // Move the points off the grid by less than keeps the tetrahedra positive.
-  for(int i = 0; i <= n; ++i)
-    for(int j = 0; j <= n; ++j)
-      for(int k = 0; k <= n; ++k)
-      {
-        const double e = 1e-3 * std::sin(1.0 + i + 7 * j + 13 * k);
-        m.points[vid(i, j, k)] = Point(i / 3.0 + e, j / 7.0 - e, k * 0.1 + e / 3.0);
-        m.vertex_refs[vid(i, j, k)] = (i + j + k) % 4;
-      }
-  const int labels[3] = {0, 10, -3};
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-    {
-      m.triangles.push_back({vid(i, j, 0), vid(i + 1, j, 0), vid(i + 1, j + 1, 0)});
-      m.triangles.push_back({vid(i, j, 0), vid(i + 1, j + 1, 0), vid(i, j + 1, 0)});
-      m.triangle_labels.push_back(labels[(i + j) % 3]);
-      m.triangle_labels.push_back(labels[(i + j + 1) % 3]);
-    }
-  for(int i = 0; i < n; ++i)
-  {
-    m.edges.push_back({vid(i, 0, 0), vid(i + 1, 0, 0)});
-    m.edge_labels.push_back(labels[i % 3]);
-  }
-  for(int c = 0; c < 8; ++c) m.corners.push_back(vid((c & 1) * n, (c >> 1 & 1) * n, (c >> 2 & 1) * n));
-  m.required_vertices = {vid(1, 1, 1)};
-  m.ridges = {0, 2};
-  return m;
-}
-
 
 // Runs `f`, which must throw Mesh_io_error at `line` of `file` with `words` in the message.
 template <class F>
@@ -303,11 +266,14 @@ TEST(Gmsh, DispatchByExtension)
   const fs::path vtu = tmp_dir() / "dispatch.vtu";
   IO::write_mesh(vtu.string(), m);
   EXPECT_NE(read_text(vtu).find("<VTKFile type=\"UnstructuredGrid\""), std::string::npos);
-  expect_error([&] { IO::read_mesh(vtu.string(), warnings); }, vtu, 0, "reading .vtu is not supported");
+  IO::Mesh_file_format f;
+  const Tet_mesh v = IO::read_mesh(vtu.string(), f, warnings);
+  EXPECT_EQ(f, (IO::Mesh_file_format{IO::Mesh_format::vtu, 0, true}));
+  EXPECT_EQ(v.triangles, m.triangles);
 
   const fs::path other = tmp_dir() / "dispatch.obj";
-  expect_error([&] { IO::read_mesh(other.string(), warnings); }, other, 0, "must end in .mesh or .msh");
-  expect_error([&] { IO::write_mesh(other.string(), m); }, other, 0, "must end in .mesh, .msh or .vtu");
+  expect_error([&] { IO::read_mesh(other.string(), warnings); }, other, 0, "must end in .mesh, .meshb, .msh");
+  expect_error([&] { IO::write_mesh(other.string(), m); }, other, 0, "must end in .mesh, .meshb, .msh");
   EXPECT_FALSE(fs::exists(other));
 }
 
@@ -389,10 +355,13 @@ TEST(GmshErrors, DuplicateNodeTag)
   expect_read_error("duplicate.msh", with_line(good_22, 13, "7 0 0 1"), 13, "node tag 7 is defined twice");
 }
 
-TEST(GmshErrors, BinaryFile)
+TEST(GmshErrors, BinaryFileWithoutItsByteOrderMark)
 {
-  expect_read_error("binary22.msh", with_line(good_22, 2, "2.2 1 8"), 2, "binary");
-  expect_read_error("binary41.msh", with_line(good_41, 2, "4.1 1 8"), 2, "binary");
+  // An ASCII file that says it is binary: where the byte order mark 1 should be, there is text.
+  expect_read_error("binary22.msh", with_line(good_22, 2, "2.2 1 8"), 0, "byte order mark");
+  expect_read_error("binary41.msh", with_line(good_41, 2, "4.1 1 8"), 0, "byte order mark");
+  expect_read_error("type2.msh", with_line(good_22, 2, "2.2 2 8"), 2, "file type 2 is not valid");
+  expect_read_error("size4.msh", with_line(good_22, 2, "2.2 0 4"), 2, "data size 4 is not supported");
 }
 
 TEST(GmshErrors, UnsupportedVersion)
@@ -459,11 +428,13 @@ TEST(Vtu, RegularTetrahedron)
   m.points = {Point(1, 1, 1), Point(1, -1, -1), Point(-1, -1, 1), Point(-1, 1, -1), Point(2, 2, 2)};
   m.tets = {{0, 1, 2, 3}, {0, 1, 3, 4}};
   m.tet_labels = {0, 6};
+  m.triangles = {{0, 1, 2}};
+  m.triangle_labels = {9};
   const fs::path p = tmp_dir() / "regular.vtu";
-  IO::write_vtu(p.string(), m);
+  IO::write_vtu(p.string(), m, false);
   const std::string text = read_text(p);
 
-  EXPECT_NE(text.find("NumberOfPoints=\"5\" NumberOfCells=\"2\""), std::string::npos);
+  EXPECT_NE(text.find("NumberOfPoints=\"5\" NumberOfCells=\"3\""), std::string::npos);
   // Tags balance: each opened tag is closed in order.
   std::vector<std::string> open;
   for(std::size_t i = text.find('<'); i != std::string::npos; i = text.find('<', i + 1))
@@ -493,19 +464,22 @@ TEST(Vtu, RegularTetrahedron)
     std::istringstream in(text.substr(open_end + 1, text.find("</DataArray>", open_end) - open_end - 1));
     return std::vector<double>(std::istream_iterator<double>(in), std::istream_iterator<double>());
   };
-  EXPECT_EQ(values("connectivity", "Int64"), (std::vector<double>{0, 1, 2, 3, 0, 1, 3, 4}));
-  EXPECT_EQ(values("offsets", "Int64"), (std::vector<double>{4, 8}));
-  EXPECT_EQ(values("types", "UInt8"), (std::vector<double>{10, 10}));
-  EXPECT_EQ(values("subdomain", "Int32"), (std::vector<double>{0, 6}));
+  // The tetrahedra, then the boundary triangle with its patch label.
+  EXPECT_EQ(values("connectivity", "Int64"), (std::vector<double>{0, 1, 2, 3, 0, 1, 3, 4, 0, 1, 2}));
+  EXPECT_EQ(values("offsets", "Int64"), (std::vector<double>{4, 8, 11}));
+  EXPECT_EQ(values("types", "UInt8"), (std::vector<double>{10, 10, 5}));
+  EXPECT_EQ(values("label", "Int32"), (std::vector<double>{0, 6, 9}));
+  EXPECT_EQ(values("dimension", "UInt8"), (std::vector<double>{3, 3, 2}));
   const auto angles = values("min_dihedral_angle", "Float64");
-  ASSERT_EQ(angles.size(), 2u);
+  ASSERT_EQ(angles.size(), 3u);
+  EXPECT_EQ(angles[2], -1);
   EXPECT_NEAR(angles[0], 70.5288, 1e-3);
   EXPECT_NEAR(angles[0], std::acos(1.0 / 3.0) * 180.0 / 3.14159265358979323846, 1e-9);
   EXPECT_LT(angles[1], 70.0);
 
   const std::size_t cell_data = text.find("<CellData");
   ASSERT_NE(cell_data, std::string::npos);
-  EXPECT_LT(cell_data, text.find("Name=\"subdomain\""));
+  EXPECT_LT(cell_data, text.find("Name=\"label\""));
   EXPECT_LT(cell_data, text.find("Name=\"min_dihedral_angle\""));
   // Points, bit for bit.
   std::istringstream pts(text.substr(text.find('>', text.find("NumberOfComponents=\"3\"")) + 1));
@@ -532,8 +506,12 @@ TEST(Cli, ConvertsThroughGmshAndVtu)
   ASSERT_EQ(run(back, vtu), 0);
   std::ostringstream warnings;
   expect_same_mesh_content(m, IO::read_medit(back.string(), warnings));
-  EXPECT_NE(read_text(vtu).find("NumberOfCells=\"162\""), std::string::npos);
-  EXPECT_NE(run(vtu, back), 0);
+  // 162 tetrahedra, 18 triangles, 3 edges, 8 corners.
+  EXPECT_NE(read_text(vtu).find("NumberOfCells=\"191\""), std::string::npos);
+  ASSERT_EQ(run(vtu, back), 0) << output;
+  Tet_mesh from_vtu = IO::read_medit(back.string(), warnings);
+  EXPECT_EQ(from_vtu.triangle_labels, m.triangle_labels);
+  EXPECT_EQ(from_vtu.tet_labels, m.tet_labels);
 }
 
 TEST(Gmsh, UntaggedPointElementsAreNotCorners)

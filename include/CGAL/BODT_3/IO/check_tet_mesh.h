@@ -7,6 +7,9 @@
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <tuple>
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -37,16 +40,6 @@ struct Sorted_triple_hash
     std::size_t h = std::hash<int>()(a[0]);
     h = h * 1000003u ^ std::hash<int>()(a[1]);
     return h * 1000003u ^ std::hash<int>()(a[2]);
-  }
-};
-
-struct Sorted_quad_hash
-{
-  std::size_t operator()(const std::array<int, 4>& a) const
-  {
-    std::size_t h = 0;
-    for(int i : a) h = h * 1000003u ^ std::hash<int>()(i);
-    return h;
   }
 };
 
@@ -110,46 +103,92 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
                                 std::to_string(n) + " vertices");
     }
 
-  // Repeated tetrahedra.
+  // Repeated tetrahedra, then faces shared by more than two tetrahedra: the faces
+  // are bucketed by their smallest vertex (a counting sort), and each small bucket is
+  // sorted, which is many times faster than hashing every face.
   {
-    std::unordered_map<std::array<int, 4>, std::size_t, internal::Sorted_quad_hash> seen;
-    seen.reserve(mesh.tets.size());
-    for(std::size_t t = 0; t < mesh.tets.size(); ++t)
-    {
-      auto key = mesh.tets[t];
-      std::sort(key.begin(), key.end());
-      auto ins = seen.emplace(key, t);
-      if(!ins.second)
-        throw Mesh_io_error(file, src.tet_line(t),
-                            "tetrahedron " + std::to_string(t + 1) + " (" +
-                                internal::tet_to_string(mesh.tets[t]) + ") repeats tetrahedron " +
-                                std::to_string(ins.first->second + 1) +
-                                (src.tet_line(ins.first->second) > 0
-                                     ? " of line " + std::to_string(src.tet_line(ins.first->second))
-                                     : std::string()));
-    }
-  }
-
-  // Faces shared by more than two tetrahedra.
-  {
-    std::unordered_map<std::array<int, 3>, std::pair<std::size_t, int>, internal::Sorted_triple_hash> faces;
-    faces.reserve(mesh.tets.size() * 3);
-    for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+    const std::size_t nt = mesh.tets.size();
+    std::vector<std::size_t> start(static_cast<std::size_t>(n) + 1, 0);
+    for(const auto& c : mesh.tets)
       for(int k = 0; k < 4; ++k)
+        ++start[static_cast<std::size_t>(std::min({c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]})) + 1];
+    for(std::size_t v = 0; v < static_cast<std::size_t>(n); ++v) start[v + 1] += start[v];
+    struct Face { int b, c, opposite; std::uint32_t tet; };
+    std::vector<Face> faces(4 * nt);
+    {
+      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+      for(std::size_t t = 0; t < nt; ++t)
       {
-        std::array<int, 3> f;
-        for(int j = 0, m = 0; j < 4; ++j)
-          if(j != k) f[m++] = mesh.tets[t][j];
-        std::sort(f.begin(), f.end());
-        auto& entry = faces.emplace(f, std::make_pair(t, 0)).first->second;
-        if(++entry.second == 3)
-          throw Mesh_io_error(file, src.tet_line(t),
-                              "tetrahedron " + std::to_string(t + 1) + " is the third to share face (" +
-                                  std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " +
-                                  std::to_string(f[2] + 1) + "), already shared by tetrahedron " +
-                                  std::to_string(entry.first + 1) + " and another; a face "
-                                  "belongs to at most two tetrahedra");
+        const auto& c = mesh.tets[t];
+        for(int k = 0; k < 4; ++k)
+        {
+          int f[3] = {c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]};
+          std::sort(f, f + 3);
+          faces[fill[static_cast<std::size_t>(f[0])]++] = {f[1], f[2], c[k], static_cast<std::uint32_t>(t)};
+        }
       }
+    }
+    // Per face group (sorted by tet), the first repeat and the first third tet, in file order.
+    std::size_t repeat = nt, repeated = 0, third = nt, first_of_third = 0;
+    std::array<int, 3> third_face{};
+    for(std::size_t a = 0; a < static_cast<std::size_t>(n); ++a)
+    {
+      auto begin = faces.begin() + static_cast<std::ptrdiff_t>(start[a]);
+      auto end = faces.begin() + static_cast<std::ptrdiff_t>(start[a + 1]);
+      std::sort(begin, end, [](const Face& x, const Face& y) {
+        return std::tie(x.b, x.c, x.tet) < std::tie(y.b, y.c, y.tet);
+      });
+      for(auto g = begin; g != end;)
+      {
+        auto h = g + 1;
+        while(h != end && h->b == g->b && h->c == g->c) ++h;
+        if(h - g == 2)
+        {
+          if(g->opposite == (g + 1)->opposite && (g + 1)->tet < repeat)
+          {
+            repeat = (g + 1)->tet;
+            repeated = g->tet;
+          }
+        }
+        else if(h - g > 2)
+        {
+          // Many tetrahedra on one face (a damaged file): find repeats by sorting, not pairwise.
+          std::vector<Face> group(g, h);
+          std::sort(group.begin(), group.end(), [](const Face& x, const Face& y) {
+            return std::tie(x.opposite, x.tet) < std::tie(y.opposite, y.tet);
+          });
+          for(std::size_t i = 1; i < group.size(); ++i)
+            if(group[i].opposite == group[i - 1].opposite && group[i].tet < repeat)
+            {
+              std::size_t first = i - 1;
+              while(first > 0 && group[first - 1].opposite == group[i].opposite) --first;
+              repeat = group[i].tet;
+              repeated = group[first].tet;
+            }
+        }
+        if(h - g >= 3 && (g + 2)->tet < third)
+        {
+          third = (g + 2)->tet;
+          first_of_third = g->tet;
+          third_face = {static_cast<int>(a), g->b, g->c};
+        }
+        g = h;
+      }
+    }
+    if(repeat < nt)
+      throw Mesh_io_error(file, src.tet_line(repeat),
+                          "tetrahedron " + std::to_string(repeat + 1) + " (" +
+                              internal::tet_to_string(mesh.tets[repeat]) + ") repeats tetrahedron " +
+                              std::to_string(repeated + 1) +
+                              (src.tet_line(repeated) > 0 ? " of line " + std::to_string(src.tet_line(repeated))
+                                                          : std::string()));
+    if(third < nt)
+      throw Mesh_io_error(file, src.tet_line(third),
+                          "tetrahedron " + std::to_string(third + 1) + " is the third to share face (" +
+                              std::to_string(third_face[0] + 1) + " " + std::to_string(third_face[1] + 1) + " " +
+                              std::to_string(third_face[2] + 1) + "), already shared by tetrahedron " +
+                              std::to_string(first_of_third + 1) + " and another; a face "
+                              "belongs to at most two tetrahedra");
   }
 
   // Orientation, decided by exact predicates.

@@ -4,16 +4,21 @@
 #define CGAL_BODT_3_IO_MEDIT_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/IO/Mapped_file.h>
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
+#include <CGAL/BODT_3/IO/Output_buffer.h>
 #include <CGAL/BODT_3/IO/Token_reader.h>
 #include <CGAL/BODT_3/IO/check_tet_mesh.h>
 #include <CGAL/BODT_3/IO/write_atomically.h>
 
-#include <cctype>
-#include <cstdio>
+#include <algorithm>
 #include <iostream>
+#include <limits>
 #include <map>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace CGAL {
 namespace BODT_3 {
@@ -23,15 +28,10 @@ namespace internal_medit {
 
 using BODT_3::internal::Token_reader;
 
-inline bool is_keyword(const std::string& t)
-{
-  return !t.empty() && std::isalpha(static_cast<unsigned char>(t[0]));
-}
-
 // Sections whose entries are plain numbers we do not keep: tokens per entry.
-inline const std::map<std::string, std::size_t>& ignored_sections()
+inline const std::map<std::string, std::size_t, std::less<>>& ignored_sections()
 {
-  static const std::map<std::string, std::size_t> s = {
+  static const std::map<std::string, std::size_t, std::less<>> s = {
       {"Normals", 3}, {"NormalAtVertices", 2}, {"NormalAtTriangleVertices", 3},
       {"Tangents", 3}, {"TangentAtVertices", 2}, {"TangentAtEdges", 3},
       {"RequiredEdges", 1}, {"RequiredTriangles", 1}, {"Quadrilaterals", 5},
@@ -42,11 +42,11 @@ inline const std::map<std::string, std::size_t>& ignored_sections()
 inline int read_index(Token_reader& in, std::size_t limit, const char* entity, const char* plural,
                       std::size_t entry, std::size_t count)
 {
-  if(is_keyword(in.peek()))
+  if(in.next_is_word())
   {
     in.next("a vertex index");
     in.error("the section ends after " + std::to_string(entry) + " of the " + std::to_string(count) + " " +
-             plural + " its count announces (found '" + in.peek_last() + "')");
+             plural + " its count announces (found '" + internal::printable(in.peek_last()) + "')");
   }
   const long long v = in.next_integer("a vertex index");
   if(v < 1 || static_cast<unsigned long long>(v) > limit)
@@ -55,38 +55,42 @@ inline int read_index(Token_reader& in, std::size_t limit, const char* entity, c
   return static_cast<int>(v - 1);
 }
 
-} // namespace internal_medit
-
-/// Reads a Medit `.mesh` file (ASCII). Keeps vertices with references, tetrahedra
-/// with subdomain labels, triangles with patch labels, `Edges`, `Corners`, `Ridges`
-/// and `RequiredVertices`; skips other sections with a warning on `warnings`.
-/// Throws `Mesh_io_error` ("file:line: what is wrong") on any defect, including
-/// those `check_and_orient` finds.
-inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std::cerr)
+inline bool looks_like_medit(std::string_view head)
 {
-  using namespace internal_medit;
-  Token_reader in(file);
+  const std::string_view t = internal::first_token(head, '#');
+  return t.empty() || std::string_view("MeshVersionFormatted").substr(0, t.size()) == t;
+}
+
+/// Parses the text of an ASCII Medit file named `file`; `version` receives its
+/// MeshVersionFormatted.
+inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostream& warnings, int& version)
+{
+  Token_reader in(file, text);
   Tet_mesh mesh;
   Tet_mesh_source src;
   src.file = file;
   bool have_vertices = false, have_dimension = false;
-  // Indices into sections that may come before the section they refer to are checked last.
-  std::vector<long> corner_lines, required_lines, ridge_lines, edge_lines;
+  // Indices into sections that may come before the section they refer to are checked
+  // last, in their full width: 4294967297 must not become 1.
+  std::vector<long long> corners, required, ridges;
+  std::vector<long> corner_lines, required_lines, ridge_lines;
 
-  std::string first = in.next("the keyword MeshVersionFormatted");
+  const std::string_view first = in.next("the keyword MeshVersionFormatted");
   if(first != "MeshVersionFormatted")
-    in.error("not a Medit mesh file: expected 'MeshVersionFormatted', found '" + first + "'");
-  const int version = in.next_int("the format version");
+    in.error("not a Medit mesh file: expected 'MeshVersionFormatted', found '" + internal::printable(first) + "'");
+  version = in.next_int("the format version");
   if(version < 1 || version > 4)
     in.error("unsupported MeshVersionFormatted " + std::to_string(version));
 
   while(!in.at_end())
   {
-    const std::string kw = in.next("a section keyword");
+    const std::string_view kw = in.next("a section keyword");
     if(kw == "End") break;
-    if(!is_keyword(kw))
-      in.error("expected a section keyword, found '" + kw +
+    const char c0 = kw[0];
+    if(!((c0 >= 'a' && c0 <= 'z') || (c0 >= 'A' && c0 <= 'Z')))
+      in.error("expected a section keyword, found '" + internal::printable(kw) +
                "'; the previous section may have more entries than its count says");
+    const std::string name(kw);
     if(kw == "Dimension")
     {
       const int d = in.next_int("the dimension");
@@ -99,16 +103,18 @@ inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std
       if(have_vertices) in.error("a second 'Vertices' section");
       have_vertices = true;
       const std::size_t n = in.next_count("the number of vertices", 4);
+      if(n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        in.error("the number of vertices is " + std::to_string(n) + ", more than this reader can index");
       mesh.points.reserve(n);
       mesh.vertex_refs.reserve(n);
       src.vertex_lines.reserve(n);
       for(std::size_t i = 0; i < n; ++i)
       {
-        if(is_keyword(in.peek()))
+        if(in.next_is_word())
         {
           in.next("a vertex");
           in.error("the section ends after " + std::to_string(i) + " of the " + std::to_string(n) +
-                   " vertices its count announces (found '" + in.peek_last() + "')");
+                   " vertices its count announces (found '" + internal::printable(in.peek_last()) + "')");
         }
         const double x = in.next_double("a vertex x coordinate");
         src.vertex_lines.push_back(in.line());
@@ -120,11 +126,12 @@ inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std
     }
     else if(kw == "Tetrahedra" || kw == "Triangles" || kw == "Edges")
     {
-      if(!have_vertices) in.error("section '" + kw + "' comes before 'Vertices'");
+      if(!have_vertices) in.error("section '" + name + "' comes before 'Vertices'");
       const std::size_t arity = kw == "Tetrahedra" ? 4 : kw == "Triangles" ? 3 : 2;
       const char* entity = kw == "Tetrahedra" ? "tetrahedron" : kw == "Triangles" ? "triangle" : "edge";
       const char* plural = kw == "Tetrahedra" ? "tetrahedra" : kw == "Triangles" ? "triangles" : "edges";
       const std::size_t n = in.next_count(("the number of " + std::string(plural)).c_str(), arity + 1);
+      if(arity == 4) { mesh.tets.reserve(mesh.tets.size() + n); mesh.tet_labels.reserve(mesh.tets.size() + n); src.tet_lines.reserve(mesh.tets.size() + n); }
       for(std::size_t i = 0; i < n; ++i)
       {
         int v[4] = {0, 0, 0, 0};
@@ -151,20 +158,17 @@ inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std
         {
           mesh.edges.push_back({v[0], v[1]});
           mesh.edge_labels.push_back(label);
-          edge_lines.push_back(line);
         }
       }
     }
     else if(kw == "Corners" || kw == "RequiredVertices" || kw == "Ridges")
     {
-      const std::size_t n = in.next_count(("the number of " + kw).c_str(), 1);
-      std::vector<int>& target = kw == "Corners" ? mesh.corners
-                                 : kw == "Ridges" ? mesh.ridges : mesh.required_vertices;
-      std::vector<long>& lines = kw == "Corners" ? corner_lines
-                                 : kw == "Ridges" ? ridge_lines : required_lines;
+      const std::size_t n = in.next_count(("the number of " + name).c_str(), 1);
+      std::vector<long long>& target = kw == "Corners" ? corners : kw == "Ridges" ? ridges : required;
+      std::vector<long>& lines = kw == "Corners" ? corner_lines : kw == "Ridges" ? ridge_lines : required_lines;
       for(std::size_t i = 0; i < n; ++i)
       {
-        target.push_back(static_cast<int>(in.next_integer("an index") - 1));
+        target.push_back(in.next_integer("an index"));
         lines.push_back(in.line());
       }
     }
@@ -174,23 +178,23 @@ inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std
       if(it != ignored_sections().end())
       {
         const long line = in.line();
-        const std::size_t n = in.next_count(("the number of " + kw).c_str(), it->second);
+        const std::size_t n = in.next_count(("the number of " + name).c_str(), it->second);
         for(std::size_t i = 0; i < n * it->second; ++i)
-          in.next_double(("an entry of section " + kw).c_str());
-        warnings << "warning: " << file << ":" << line << ": section '" << kw
+          in.next_double(("an entry of section " + name).c_str());
+        warnings << "warning: " << file << ":" << line << ": section '" << name
                  << "' is not used and will not be written back\n";
       }
       else
       {
         const long line = in.line();
         std::size_t skipped = 0;
-        while(!in.at_end() && !is_keyword(in.peek()))
+        while(!in.at_end() && !in.next_is_word())
         {
           in.next("an entry");
           ++skipped;
         }
-        warnings << "warning: " << file << ":" << line << ": unknown section '" << kw << "' skipped ("
-                 << skipped << " values)\n";
+        warnings << "warning: " << file << ":" << line << ": unknown section '" << internal::printable(kw)
+                 << "' skipped (" << skipped << " values)\n";
       }
     }
   }
@@ -200,72 +204,98 @@ inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std
   if(!have_vertices)
     throw Mesh_io_error(file, 0, "the file has no 'Vertices' section");
 
-  auto check_refs = [&](const std::vector<int>& ids, const std::vector<long>& lines, std::size_t limit,
-                        const char* section, const char* what) {
+  auto check_refs = [&](const std::vector<long long>& ids, const std::vector<long>& lines, std::size_t limit,
+                        const char* section, const char* what, std::vector<int>& out) {
+    out.reserve(ids.size());
     for(std::size_t i = 0; i < ids.size(); ++i)
-      if(ids[i] < 0 || static_cast<std::size_t>(ids[i]) >= limit)
+    {
+      if(ids[i] < 1 || static_cast<unsigned long long>(ids[i]) > limit)
         throw Mesh_io_error(file, lines[i],
-                            std::string(section) + " entry " + std::to_string(i + 1) + " refers to " +
-                                what + " " + std::to_string(ids[i] + 1) + ", but valid " + what +
-                                "s are 1 to " + std::to_string(limit));
+                            std::string(section) + " entry " + std::to_string(i + 1) + " refers to " + what +
+                                " " + std::to_string(ids[i]) + ", but valid " + what + "s are 1 to " +
+                                std::to_string(limit));
+      out.push_back(static_cast<int>(ids[i] - 1));
+    }
   };
-  check_refs(mesh.corners, corner_lines, mesh.points.size(), "Corners", "vertex");
-  check_refs(mesh.required_vertices, required_lines, mesh.points.size(), "RequiredVertices", "vertex");
-  check_refs(mesh.ridges, ridge_lines, mesh.edges.size(), "Ridges", "edge");
+  check_refs(corners, corner_lines, mesh.points.size(), "Corners", "vertex", mesh.corners);
+  check_refs(required, required_lines, mesh.points.size(), "RequiredVertices", "vertex", mesh.required_vertices);
+  check_refs(ridges, ridge_lines, mesh.edges.size(), "Ridges", "edge", mesh.ridges);
 
   check_and_orient(mesh, src, warnings);
   return mesh;
 }
 
-/// Writes `mesh` as a Medit `.mesh` file (format version 2, 17 significant digits,
-/// so that reading it back gives the same doubles).
-inline void write_medit(std::ostream& out, const Tet_mesh& mesh)
+} // namespace internal_medit
+
+/// Reads a Medit `.mesh` file (ASCII, any MeshVersionFormatted 1 to 4; numbers
+/// are read as doubles whatever the version). Keeps vertices with references,
+/// tetrahedra with subdomain labels, triangles with patch labels, `Edges`,
+/// `Corners`, `Ridges` and `RequiredVertices`; skips other sections with a warning
+/// on `warnings`. Throws `Mesh_io_error` ("file:line: what is wrong") on any
+/// defect, including those `check_and_orient` finds. `version`, when given,
+/// receives the file's MeshVersionFormatted.
+inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std::cerr, int* version = nullptr)
 {
-  char buf[128];
-  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.points.size() << "\n";
+  const internal::Mapped_file data(file, "a Medit mesh file", internal_medit::looks_like_medit);
+  int v = 0;
+  Tet_mesh mesh = internal_medit::parse(file, data.bytes(), warnings, v);
+  if(version) *version = v;
+  return mesh;
+}
+
+/// Writes `mesh` as an ASCII Medit `.mesh` file, MeshVersionFormatted `version`
+/// (1 to 4; it says how a binary reader should size numbers and changes nothing
+/// in ASCII). Coordinates are written in the shortest form that reads back to the
+/// same double.
+inline void write_medit(std::ostream& stream, const Tet_mesh& mesh, int version = 2)
+{
+  if(version < 1 || version > 4)
+    throw std::invalid_argument("write_medit: version must be 1 to 4, not " + std::to_string(version));
+  internal::Output_buffer out(stream);
+  out.put("MeshVersionFormatted ").put_int(version).put("\n\nDimension 3\n\nVertices\n").put_int(mesh.points.size()).put('\n');
   for(std::size_t i = 0; i < mesh.points.size(); ++i)
   {
     const auto& p = mesh.points[i];
-    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %d\n", p.x(), p.y(), p.z(),
-                  i < mesh.vertex_refs.size() ? mesh.vertex_refs[i] : 0);
-    out << buf;
+    out.put_double(p.x()).put(' ').put_double(p.y()).put(' ').put_double(p.z()).put(' ');
+    out.put_int(i < mesh.vertex_refs.size() ? mesh.vertex_refs[i] : 0).put('\n');
   }
   if(!mesh.triangles.empty())
   {
-    out << "\nTriangles\n" << mesh.triangles.size() << "\n";
+    out.put("\nTriangles\n").put_int(mesh.triangles.size()).put('\n');
     for(std::size_t i = 0; i < mesh.triangles.size(); ++i)
     {
       const auto& t = mesh.triangles[i];
-      out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << mesh.triangle_labels[i] << '\n';
+      out.put_int(t[0] + 1).put(' ').put_int(t[1] + 1).put(' ').put_int(t[2] + 1).put(' ');
+      out.put_int(mesh.triangle_labels[i]).put('\n');
     }
   }
-  out << "\nTetrahedra\n" << mesh.tets.size() << "\n";
+  out.put("\nTetrahedra\n").put_int(mesh.tets.size()).put('\n');
   for(std::size_t i = 0; i < mesh.tets.size(); ++i)
   {
     const auto& t = mesh.tets[i];
-    out << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1 << ' ' << mesh.tet_labels[i]
-        << '\n';
+    out.put_int(t[0] + 1).put(' ').put_int(t[1] + 1).put(' ').put_int(t[2] + 1).put(' ').put_int(t[3] + 1);
+    out.put(' ').put_int(mesh.tet_labels[i]).put('\n');
   }
   if(!mesh.edges.empty())
   {
-    out << "\nEdges\n" << mesh.edges.size() << "\n";
+    out.put("\nEdges\n").put_int(mesh.edges.size()).put('\n');
     for(std::size_t i = 0; i < mesh.edges.size(); ++i)
-      out << mesh.edges[i][0] + 1 << ' ' << mesh.edges[i][1] + 1 << ' ' << mesh.edge_labels[i] << '\n';
+      out.put_int(mesh.edges[i][0] + 1).put(' ').put_int(mesh.edges[i][1] + 1).put(' ').put_int(mesh.edge_labels[i]).put('\n');
   }
   auto write_list = [&](const char* kw, const std::vector<int>& ids) {
     if(ids.empty()) return;
-    out << "\n" << kw << "\n" << ids.size() << "\n";
-    for(int i : ids) out << i + 1 << '\n';
+    out.put("\n").put(kw).put("\n").put_int(ids.size()).put('\n');
+    for(int i : ids) out.put_int(i + 1).put('\n');
   };
   write_list("Corners", mesh.corners);
   write_list("RequiredVertices", mesh.required_vertices);
   write_list("Ridges", mesh.ridges);
-  out << "\nEnd\n";
+  out.put("\nEnd\n");
 }
 
-inline void write_medit(const std::string& file, const Tet_mesh& mesh)
+inline void write_medit(const std::string& file, const Tet_mesh& mesh, int version = 2)
 {
-  write_atomically(file, [&](std::ostream& out) { write_medit(out, mesh); });
+  write_atomically(file, [&](std::ostream& out) { write_medit(out, mesh, version); });
 }
 
 } // namespace IO

@@ -1,0 +1,131 @@
+// Reading and writing speed of every mesh format on a generated mesh: a jittered
+// grid of N^3 cubes, six tetrahedra each (N = 60 by default: 1.3 M tetrahedra), two
+// subdomains, labelled boundary triangles. Prints, per format, the file size and
+// MB/s for writing (through write_mesh: temporary file, fsync, rename) and reading
+// (read_mesh from the page cache, including the mesh checks), and the read time
+// without the checks (check_and_orient timed alone and subtracted).
+//
+// usage: io_speed [N] [folder]   (folder: where the files go, default /tmp)
+#include <CGAL/BODT_3/IO/mesh_io.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace IO = CGAL::BODT_3::IO;
+using CGAL::BODT_3::Tet_mesh;
+
+namespace {
+
+Tet_mesh jittered_grid(int n)
+{
+  Tet_mesh m;
+  auto id = [n](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  std::mt19937_64 random(42);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  const double h = 1.0 / n;
+  for(int k = 0; k <= n; ++k)
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i)
+      {
+        auto coordinate = [&](int c) { return (c + ((c > 0 && c < n) ? jitter(random) : 0.0)) * h; };
+        m.points.emplace_back(coordinate(i), coordinate(j), coordinate(k));
+        m.vertex_refs.push_back(0);
+      }
+  // Six tetrahedra around each cube's main diagonal, one per path from corner 0 to 7.
+  const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for(int k = 0; k < n; ++k)
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+        for(const auto& path : paths)
+        {
+          int c[3] = {i, j, k};
+          std::array<int, 4> t;
+          t[0] = id(c[0], c[1], c[2]);
+          for(int s = 0; s < 3; ++s)
+          {
+            ++c[path[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          if(CGAL::orientation(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]) != CGAL::POSITIVE)
+            std::swap(t[2], t[3]);
+          m.tets.push_back(t);
+          m.tet_labels.push_back(2 * i < n ? 1 : 2);
+        }
+  // The bottom and top faces as labelled triangles.
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      for(int k : {0, n})
+      {
+        m.triangles.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k)});
+        m.triangles.push_back({id(i, j, k), id(i + 1, j + 1, k), id(i, j + 1, k)});
+        m.triangle_labels.insert(m.triangle_labels.end(), 2, k == 0 ? 10 : 11);
+      }
+  return m;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const int n = argc > 1 ? std::atoi(argv[1]) : 60;
+  const std::filesystem::path folder = argc > 2 ? argv[2] : "/tmp";
+  const Tet_mesh mesh = jittered_grid(n);
+  std::printf("jittered grid, N = %d: %zu vertices, %zu tetrahedra, %zu triangles\n\n", n, mesh.points.size(),
+              mesh.tets.size(), mesh.triangles.size());
+  std::printf("| format | size (MB) | write (s) | write MB/s | read (s) | read MB/s | read without checks (s) | MB/s |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  for(const char* name : {"mesh", "meshb", "msh41", "msh22", "msh41-binary", "msh22-binary", "vtu", "vtu-ascii",
+                          "vtk", "vtk-binary", "tetgen"})
+  {
+    const IO::Mesh_file_format format = IO::parse_format_name(name);
+    const std::string ext = format.format == IO::Mesh_format::medit ? ".mesh"
+                            : format.format == IO::Mesh_format::meshb ? ".meshb"
+                            : format.format == IO::Mesh_format::gmsh ? ".msh"
+                            : format.format == IO::Mesh_format::vtu ? ".vtu"
+                            : format.format == IO::Mesh_format::vtk ? ".vtk" : ".node";
+    const std::filesystem::path file = folder / (std::string("io_speed_") + name + ext);
+    auto t = std::chrono::steady_clock::now();
+    IO::write_mesh(file.string(), mesh, format);
+    const double write = seconds_since(t);
+    std::uintmax_t bytes = 0;
+    for(const char* e : {".node", ".ele", ".face", ".edge"})
+      if(format.format == IO::Mesh_format::tetgen) bytes += std::filesystem::file_size(folder / (std::string("io_speed_") + name + e));
+    if(format.format != IO::Mesh_format::tetgen) bytes = std::filesystem::file_size(file);
+
+    std::ostringstream warnings;
+    t = std::chrono::steady_clock::now();
+    const Tet_mesh back = IO::read_mesh(file.string(), warnings);
+    const double read = seconds_since(t);
+    if(back.tets != mesh.tets || back.points.size() != mesh.points.size())
+    {
+      std::fprintf(stderr, "%s: the mesh read back differs\n", name);
+      return 1;
+    }
+    // The checks every reader ends with (check_and_orient), timed alone.
+    Tet_mesh copy = back;
+    CGAL::BODT_3::Tet_mesh_source source;
+    source.file = file.string();
+    t = std::chrono::steady_clock::now();
+    CGAL::BODT_3::check_and_orient(copy, source, warnings);
+    const double check = seconds_since(t);
+    const double mb = static_cast<double>(bytes) / 1e6;
+    std::printf("| %s | %.1f | %.2f | %.0f | %.2f | %.0f | %.2f | %.0f |\n", name, mb, write, mb / write, read,
+                mb / read, read - check, mb / (read - check));
+    std::fflush(stdout);
+    std::filesystem::remove(file);
+    for(const char* e : {".node", ".ele", ".face", ".edge"})
+      std::filesystem::remove(folder / (std::string("io_speed_") + name + e));
+  }
+  return 0;
+}
