@@ -90,7 +90,8 @@ BODT::Smoothing_options options_of(const py::dict& given)
       if(m == "bodt") o.moving_vertices = BODT::Moving_vertices::ALL;
       else if(m == "odt") o.moving_vertices = BODT::Moving_vertices::INTERIOR;
       else if(m == "flips") o.moving_vertices = BODT::Moving_vertices::NONE;
-      else throw py::value_error("method must be 'bodt', 'odt' or 'flips', not '" + m + "'");
+      else if(m == "nodt") o.smoothing_method = BODT::Smoothing_method::NODT;
+      else throw py::value_error("method must be 'bodt', 'odt', 'flips' or 'nodt', not '" + m + "'");
     }
     else if(key == "preserve_features") o.preserve_features = v.cast<bool>();
     else if(key == "quality_guard") o.quality_guard = v.cast<bool>();

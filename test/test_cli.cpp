@@ -128,9 +128,9 @@ TEST(Cli, FailedRunWritesNothing)
   // A folder as input is named in the message.
   fs::create_directories(dir / "folder.mesh");
   EXPECT_EQ(run_bodt("smooth " + q(dir / "folder.mesh") + " -o " + q(dir / "out.mesh"), out, dir), 1);
-  EXPECT_NE(out.find("folder.mesh: is a folder"), std::string::npos) << out;
+  EXPECT_NE(out.find("folder.mesh: is a directory"), std::string::npos) << out;
   EXPECT_EQ(run_bodt("quality " + q(dir / "folder.mesh"), out, dir), 1);
-  EXPECT_NE(out.find("folder.mesh: is a folder"), std::string::npos) << out;
+  EXPECT_NE(out.find("folder.mesh: is a directory"), std::string::npos) << out;
 }
 
 // Paths with a quote and a backslash give valid JSON, which holds everything the

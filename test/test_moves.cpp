@@ -3,6 +3,7 @@
 // and the printed coefficients of Algorithm 2.
 #include <CGAL/BODT_3/Bodt_feature_move.h>
 #include <CGAL/BODT_3/Bodt_surface_move.h>
+#include <CGAL/BODT_3/Nodt_move.h>
 #include <CGAL/BODT_3/Odt_move.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -335,6 +336,62 @@ TEST(BodtSurfaceMove, EqualsNumericalMinimizerOnRandomBoundaryStars)
     if(norm(to_p3(X)) > 0) ++moved;
   }
   EXPECT_EQ(moved, 300);
+}
+
+// NODT, unconstrained: one Newton step from X = 0 on the exact error (which is
+// cubic off the tangent plane), with derivatives by central differences.
+TEST(NodtMove, IsTheNewtonStepOfTheExactError)
+{
+  CGAL::Random rng(17);
+  int moved = 0;
+  for(int n = 0; n < 200; ++n)
+  {
+    const Star star = random_boundary_star(rng);
+    const Vector X = CGAL::BODT_3::Nodt_move()(star);
+    const LD h = 1e-4L;
+    auto f = [&](LD a, LD b, LD c) { return exact_error(star, {a, b, c}); };
+    LD g[3], H[3][3];
+    for(int i = 0; i < 3; ++i)
+    {
+      LD e[3] = {0, 0, 0};
+      e[i] = h;
+      g[i] = (f(e[0], e[1], e[2]) - f(-e[0], -e[1], -e[2])) / (2 * h);
+      for(int j = 0; j < 3; ++j)
+      {
+        LD d[3] = {0, 0, 0};
+        d[j] = h;
+        H[i][j] = (f(e[0] + d[0], e[1] + d[1], e[2] + d[2]) - f(e[0] - d[0], e[1] - d[1], e[2] - d[2]) -
+                   f(-e[0] + d[0], -e[1] + d[1], -e[2] + d[2]) + f(-e[0] - d[0], -e[1] - d[1], -e[2] - d[2])) /
+                  (4 * h * h);
+      }
+    }
+    // Solve H X = -g (Cramer) and compare.
+    auto det3 = [](LD m[3][3]) {
+      return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    };
+    const LD det = det3(H);
+    if(!(det > 0) || !(H[0][0] > 0)) continue;
+    P3 num;
+    LD* out[3] = {&num.x, &num.y, &num.z};
+    for(int k = 0; k < 3; ++k)
+    {
+      LD m[3][3];
+      for(int i = 0; i < 3; ++i)
+        for(int j = 0; j < 3; ++j) m[i][j] = j == k ? -g[i] : H[i][j];
+      *out[k] = det3(m) / det;
+    }
+    EXPECT_LE(norm(sub(num, to_p3(X))), 1e-6 * norm(num)) << "star " << n;
+    if(norm(to_p3(X)) > 0) ++moved;
+  }
+  EXPECT_GT(moved, 150);
+  // Inside, NODT is ODT.
+  for(int n = 0; n < 50; ++n)
+  {
+    const Star star = random_inner_star(rng);
+    const Vector a = CGAL::BODT_3::Nodt_move()(star), b = CGAL::BODT_3::Odt_move()(star);
+    EXPECT_LE(std::sqrt((a - b).squared_length()), 1e-12 * std::sqrt(b.squared_length())) << "star " << n;
+  }
 }
 
 TEST(BodtSurfaceMove, CoefficientsAreThePrintedOnes)

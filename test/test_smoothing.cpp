@@ -3,10 +3,16 @@
 // quality never lower than the input's nor than the interior-only ODT baseline,
 // determinism. Also the paper's random sphere as a Triangulation_3.
 #include "inputs/generated_inputs.h"
+#include "test_support.h"
 
 #include <CGAL/BODT_3/boundary_distance.h>
 #include <CGAL/BODT_3/mesh_quality.h>
+#include <CGAL/BODT_3/smooth.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Random.h>
 
 #include <gtest/gtest.h>
 
@@ -251,4 +257,73 @@ TEST(ReturnCodes, ConvergenceAndTimeLimitStopTheSweeps)
                                        CGAL::parameters::progress_visitor = Counter{&its}),
             CGAL::TIME_LIMIT_REACHED);
   EXPECT_EQ(its, 1u);
+}
+
+// NODT (the paper's baseline): surface vertices leave the boundary and come back
+// onto the input's boundary triangles; a flat face stays flat.
+TEST(Nodt, SurfaceVerticesStayOnTheInputBoundary)
+{
+  const Generated_mesh input = make_input(Shape::sphere, Size::small);
+  C3t3 c3t3 = input.c3t3;
+  const std::vector<K::Triangle_3> triangles = BODT::boundary_triangles(input.c3t3);
+  using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(triangles.begin(), triangles.end());
+  const auto before = BODT::mesh_quality(c3t3);
+  BODT::Smoothing_options opt;
+  opt.smoothing_method = BODT::Smoothing_method::NODT;
+  opt.topology_optimization = false;
+  opt.vertex_insertion = false;
+  opt.max_min_threshold = 0;
+  BODT::smooth(c3t3, opt);
+  const auto after = BODT::mesh_quality(c3t3);
+  auto cp = c3t3.triangulation().geom_traits().construct_point_3_object();
+  std::size_t surface_vertices = 0, moved = 0;
+  auto v0 = input.c3t3.triangulation().finite_vertices_begin();
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v, ++v0)
+  {
+    if(c3t3.in_dimension(v) != 2) continue;
+    ++surface_vertices;
+    if(cp(v->point()) != cp(v0->point())) ++moved;
+    EXPECT_LE(std::sqrt(tree.squared_distance(cp(v->point()))), 1e-12);
+  }
+  EXPECT_GT(moved, surface_vertices / 2);
+  EXPECT_EQ(after.inverted_tets, 0u);
+  EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
+}
+
+TEST(Nodt, AFlatFaceStaysFlat)
+{
+  // A box of 4 x 4 x 4 unit cubes with its vertices jittered inside the faces:
+  // every boundary vertex keeps its coordinate on the face it lies in (the box's
+  // edges and corners are found by tensor voting and move as in B-ODT).
+  BODT::Tet_mesh m = bodt_test::cube_grid(4, [](int, int, int) { return 1; });
+  CGAL::Random rng(3);
+  for(auto& p : m.points)
+  {
+    double c[3] = {p.x(), p.y(), p.z()};
+    for(double& x : c)
+      if(x > 0 && x < 4) x += rng.get_double(-0.2, 0.2);
+    p = Point(c[0], c[1], c[2]);
+  }
+  const BODT::Tet_mesh input = m;
+  BODT::Smoothing_options opt;
+  opt.smoothing_method = BODT::Smoothing_method::NODT;
+  opt.topology_optimization = false;
+  opt.vertex_insertion = false;
+  opt.max_min_threshold = 0;
+  BODT::smooth(m, opt);
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < m.points.size(); ++i)
+  {
+    for(int k = 0; k < 3; ++k)
+    {
+      const double x0 = input.points[i][k];
+      if(x0 == 0 || x0 == 4)
+      {
+        EXPECT_LE(std::abs(m.points[i][k] - x0), 1e-12) << "vertex " << i;
+      }
+    }
+    if(m.points[i] != input.points[i]) ++moved;
+  }
+  EXPECT_GT(moved, 0u);
 }

@@ -8,6 +8,7 @@
 #include <CGAL/BODT_3/IO/mesh_io.h>
 
 #include <cstdio>
+#include <stdexcept>
 #include <filesystem>
 #include <fstream>
 #include <sys/stat.h>
@@ -18,52 +19,43 @@ namespace bodt_cli {
 namespace fs = std::filesystem;
 namespace IO = CGAL::BODT_3::IO;
 
-// The choice of format and the writing are the only code that knows the writers;
-// the I/O layer's own choice of format (keeping the input's) replaces them when it lands.
-const std::vector<std::string>& output_format_names()
+IO::Mesh_file_format Output_format::resolve(const std::string& path, const IO::Mesh_file_format& input) const
 {
-  static const std::vector<std::string> names = {"mesh", "msh", "msh22", "vtu"};
-  return names;
+  return forced ? format : IO::output_format(path, input);
 }
 
-namespace {
-
-std::string format_of_name(const std::string& path)
+std::string check_format_name(const std::string& name)
 {
-  switch(IO::format_of(path))
+  try
   {
-  case IO::Mesh_format::medit: return "mesh";
-  case IO::Mesh_format::gmsh: return "msh";
-  case IO::Mesh_format::vtu: return "vtu";
-  default: return "";
+    IO::parse_format_name(name);
+    return std::string();
+  }
+  catch(const std::invalid_argument& e)
+  {
+    return e.what();
   }
 }
-
-} // namespace
 
 Output_format choose_output_format(const std::string& path, const std::string& format_option)
 {
-  const std::string by_name = format_of_name(path);
+  const IO::Mesh_format by_name = IO::format_of(path);
   if(format_option.empty())
   {
-    if(by_name.empty())
+    if(by_name == IO::Mesh_format::unknown)
       throw Usage_error("cannot tell the output format from '" + path +
-                        "': name it .mesh, .msh or .vtu, or give --format");
-    return {by_name};
+                        "': name it .mesh, .meshb, .msh, .vtu, .vtk or .node, or give --format");
+    return {false, IO::default_file_format(by_name)};
   }
-  const std::string family = format_option == "msh22" ? "msh" : format_option;
-  if(!by_name.empty() && by_name != family)
+  const IO::Mesh_file_format f = IO::parse_format_name(format_option);
+  if(by_name != IO::Mesh_format::unknown && by_name != f.format)
     throw Usage_error("--format " + format_option + " contradicts the file name '" + path + "'");
-  return {format_option};
+  return {true, f};
 }
 
-void write_output(const std::string& path, const CGAL::BODT_3::Tet_mesh& mesh, const Output_format& format)
+void write_output(const std::string& path, const CGAL::BODT_3::Tet_mesh& mesh, const IO::Mesh_file_format& format)
 {
-  if(format.name == "mesh") IO::write_medit(path, mesh);
-  else if(format.name == "msh") IO::write_gmsh(path, mesh, 41);
-  else if(format.name == "msh22") IO::write_gmsh(path, mesh, 22);
-  else if(format.name == "vtu") IO::write_vtu(path, mesh);
-  else throw Usage_error("unknown output format '" + format.name + "'");
+  IO::write_mesh(path, mesh, format);
 }
 
 namespace {
@@ -81,7 +73,7 @@ fs::path identity(const std::string& path)
 void check_input_path(const std::string& input)
 {
   std::error_code ec;
-  if(fs::is_directory(input, ec)) throw CGAL::BODT_3::Mesh_io_error(input, 0, "is a folder, not a mesh file");
+  if(fs::is_directory(input, ec)) throw CGAL::BODT_3::Mesh_io_error(input, 0, "is a directory, not a mesh file");
 }
 
 void check_output_paths(const std::string& input, const std::vector<std::pair<std::string, std::string>>& outputs)

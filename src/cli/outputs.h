@@ -7,6 +7,7 @@
 // usable before any work starts, and side files (reports) that appear only if the
 // mesh is written too.
 
+#include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 
 #include <string>
@@ -15,22 +16,30 @@
 
 namespace bodt_cli {
 
-/// The mesh format of an output, from `--format` or else the file name.
+/// The mesh format of an output: the one `--format` names, or else (`forced`
+/// false) the one the file name asks for, in the input's variant when it is the
+/// same format (`IO::output_format`).
 struct Output_format
 {
-  std::string name;   // as --format spells it: mesh, msh, msh22, vtu
+  bool forced = false;
+  CGAL::BODT_3::IO::Mesh_file_format format;
+
+  /// The format to write, once the input's is known.
+  CGAL::BODT_3::IO::Mesh_file_format resolve(const std::string& path,
+                                             const CGAL::BODT_3::IO::Mesh_file_format& input) const;
 };
 
-/// The names `--format` accepts.
-const std::vector<std::string>& output_format_names();
+/// A CLI11 check of a `--format` name (`IO::parse_format_name`).
+std::string check_format_name(const std::string& name);
 
 /// The format for `path`: `format_option` if given (and then the file name must not
 /// ask for another format), otherwise the one the file name asks for. Throws
-/// `Usage_error` when neither tells.
+/// `Usage_error` when neither tells, before any work.
 Output_format choose_output_format(const std::string& path, const std::string& format_option);
 
 /// Writes the mesh in `format`, atomically (temporary file, then rename).
-void write_output(const std::string& path, const CGAL::BODT_3::Tet_mesh& mesh, const Output_format& format);
+void write_output(const std::string& path, const CGAL::BODT_3::Tet_mesh& mesh,
+                  const CGAL::BODT_3::IO::Mesh_file_format& format);
 
 /// Refuses an input that is a folder (the readers would fail without saying which
 /// file), with a `Mesh_io_error` naming it.

@@ -64,7 +64,9 @@ int run_convert(const Convert_options& o)
   check_input_path(o.input);
   check_output_paths(o.input, {{"OUT", o.output}});
   const Output_format format = choose_output_format(o.output, o.format);
-  write_output(o.output, IO::read_mesh(o.input), format);
+  IO::Mesh_file_format input_format;
+  const BODT::Tet_mesh mesh = IO::read_mesh(o.input, input_format);
+  write_output(o.output, mesh, format.resolve(o.output, input_format));
   return 0;
 }
 
@@ -90,14 +92,16 @@ Command add_convert(CLI::App& command)
 {
   auto o = std::make_shared<Convert_options>();
   command.footer(
-      "Converts a tetrahedral mesh between Medit (.mesh), Gmsh (.msh) and VTK (.vtu, write only); the\n"
-      "format follows each file name, or --format. Vertices, tetrahedra and their labels, boundary\n"
-      "triangles and feature edges are kept. OUT is written to a temporary file and renamed, so a failed\n"
-      "run leaves no partial output.");
+      "Converts a tetrahedral mesh between Medit (.mesh, .meshb), Gmsh (.msh 2.2 and 4.1, ASCII and\n"
+      "binary), VTK (.vtu, legacy .vtk) and TetGen (.node/.ele/.face); the format follows each file name\n"
+      "(keeping the input's variant when it is the same format), or --format. Vertices, tetrahedra and\n"
+      "their labels, boundary triangles and feature edges are kept where the format can hold them\n"
+      "(doc/formats.md). OUT is written to a temporary file and renamed, so a failed run leaves no\n"
+      "partial output.");
   command.add_option("IN", o->input, "input mesh")->required();
   command.add_option("OUT", o->output, "output mesh")->required();
-  command.add_option("--format", o->format, "output format whatever the name: mesh, msh (Gmsh 4.1), msh22, vtu")
-      ->check(CLI::IsMember(output_format_names()));
+  command.add_option("--format", o->format, std::string("output format whatever the name: ") + IO::format_names())
+      ->check(CLI::Validator(check_format_name, "FORMAT"));
   return [o]() { return run_convert(*o); };
 }
 

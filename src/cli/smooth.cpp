@@ -74,6 +74,7 @@ int run_smooth(Smooth_options o)
   BODT::Smoothing_options& opt = o.smoothing;
   if(o.method == "odt") opt.moving_vertices = BODT::Moving_vertices::INTERIOR;
   else if(o.method == "flips") opt.moving_vertices = BODT::Moving_vertices::NONE;
+  else if(o.method == "nodt") opt.smoothing_method = BODT::Smoothing_method::NODT;
   opt.preserve_features = !o.no_features;
   opt.quality_guard = !o.no_guard;
   opt.topology_optimization = !o.no_flips;
@@ -87,7 +88,9 @@ int run_smooth(Smooth_options o)
   const Output_format format = choose_output_format(o.output, o.format);
 
   std::ostringstream silenced;
-  BODT::Tet_mesh mesh = BODT::IO::read_mesh(o.input, o.quiet ? silenced : std::cerr);
+  BODT::IO::Mesh_file_format input_format;
+  BODT::Tet_mesh mesh = BODT::IO::read_mesh(o.input, input_format, o.quiet ? silenced : std::cerr);
+  const BODT::IO::Mesh_file_format output_format = format.resolve(o.output, input_format);
   const BODT::Quality_report before = BODT::mesh_quality(mesh);
   if(before.inverted_tets > 0)
     throw std::runtime_error(o.input + ": " + std::to_string(before.inverted_tets) +
@@ -105,7 +108,7 @@ int run_smooth(Smooth_options o)
     report["bodt_version"] = BODT_VERSION;
     report["input"] = o.input;
     report["output"] = o.output;
-    report["output_format"] = format.name;
+    report["output_format"] = BODT::IO::format_name(output_format);
     side_files.stage(o.report, report.dump(1) + "\n");
   }
   if(!o.html.empty())
@@ -126,7 +129,7 @@ int run_smooth(Smooth_options o)
         {"output", o.output}};
     side_files.stage(o.html, BODT::html_report(o.input, before, after, run));
   }
-  write_output(o.output, mesh, format);
+  write_output(o.output, mesh, output_format);
   side_files.commit();
   if(!o.quiet) print_table(before, after, result, mesh.points.size());
   return 0;
@@ -138,11 +141,13 @@ Command add_smooth(CLI::App& command)
 {
   auto o = std::make_shared<Smooth_options>();
   command.footer(smooth_description);
-  command.add_option("input", o->input, "input mesh (.mesh, .msh)")->required();
-  command.add_option("-o,--output", o->output, "output mesh; its format follows the name (.mesh, .msh, .vtu)")
+  command.add_option("input", o->input, "input mesh (.mesh, .meshb, .msh, .vtu, .vtk, .node)")->required();
+  command.add_option("-o,--output", o->output,
+                     "output mesh; its format follows the name, in the input's variant when it is the same format")
       ->required();
-  command.add_option("--format", o->format, "output format whatever the name: mesh, msh (Gmsh 4.1), msh22, vtu")
-      ->check(CLI::IsMember(output_format_names()));
+  command.add_option("--format", o->format,
+                     std::string("output format whatever the name: ") + BODT::IO::format_names())
+      ->check(CLI::Validator(check_format_name, "FORMAT"));
   command.add_option("--iterations", o->smoothing.max_iteration_number,
                      "number of sweeps (default 20, as in the paper); 0: until a sweep changes nothing or "
                      "--convergence is reached, at most 1000")
@@ -154,8 +159,9 @@ Command add_smooth(CLI::App& command)
       ->check(CLI::NonNegativeNumber);
   command.add_option("--method", o->method,
                      "bodt: every vertex moves (default); odt: interior vertices only; flips: no vertex moves, "
-                     "flips and insertion alone")
-      ->check(CLI::IsMember({"bodt", "odt", "flips"}));
+                     "flips alone; nodt: surface vertices by Natural ODT, projected back on the input boundary "
+                     "(the paper's baseline; the volume is not kept)")
+      ->check(CLI::IsMember({"bodt", "odt", "flips", "nodt"}));
   command.add_flag("--no-features", o->no_features, "no feature preservation: every boundary vertex on its plane");
   command.add_flag("--no-guard", o->no_guard, "accept every valid move, even one that worsens the worst angles");
   command.add_flag("--no-flips", o->no_flips, "no topology optimization (flips)");

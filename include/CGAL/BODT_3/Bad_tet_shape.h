@@ -21,10 +21,10 @@ enum class Bad_tet_shape : unsigned char
   good,       // no dihedral angle out of bounds
   wedge,      // one short edge, over the middle of the opposite edge
   spike,      // one short edge, beyond an end of the opposite edge
-  spear,      // two short edges sharing a vertex
+  spear,      // two short edges sharing a vertex, bent there
   spindle,    // two opposite short edges
   spire,      // three short edges around a face: three close vertices and a far one
-  splinter,   // three short edges in a path
+  splinter,   // two short edges sharing a vertex, nearly in line
   spade,      // no short edge; a vertex close to an edge of its opposite face
   cap,        // no short edge; a vertex close to the inside of its opposite face
   sliver,     // no short edge; two opposite edges close to crossing
@@ -57,7 +57,7 @@ struct Bad_tet_options
 {
   double small_angle = 10;     // degrees: a tetrahedron with a smaller dihedral angle is bad ...
   double large_angle = 170;    // ... and one with a larger one
-  double short_edge = 0.3;     // an edge shorter than this fraction of the longest is short
+  double short_edge = 0.3;     // an edge shorter than this fraction of the longest is short (below 1/3)
   /// A point "projects inside" a face when its barycentric coordinates there all
   /// exceed this, and inside an edge when its parameter is in (margin, 1 - margin).
   double margin = 0.05;
@@ -98,11 +98,12 @@ inline V3 cross(const V3& a, const V3& b)
 /// Classifies a tetrahedron by its dihedral angles (bad or not) and, when bad, by
 /// its short edges and, without them, by where its vertices project:
 ///  1. an edge is short if shorter than `short_edge` times the longest. By the
-///     triangle inequality, two short edges never chain between the ends of the
-///     longest edge, so there are at most three, and: one is a wedge or a spike (the
-///     opposite edge's closest point to the short edge's midpoint inside that edge,
-///     or not), two sharing a vertex a spear, two opposite a spindle, three around a
-///     face a spire, three in a path a splinter;
+///     triangle inequality (with `short_edge` below 1/3), short edges never chain
+///     between the ends of the longest edge, so there are at most three, around a
+///     face, and: one is a wedge or a spike (the short edge's midpoint projecting
+///     inside the opposite edge, or not), two sharing a vertex a splinter if they
+///     are nearly in line (more than 120 degrees apart) and a spear otherwise, two
+///     opposite a spindle, three (around a face) a spire;
 ///  2. with no short edge, the tetrahedron is flat: if a vertex projects inside its
 ///     opposite face (every barycentric coordinate above `margin`), it is a cap
 ///     (the vertex nearest its face wins); else if a vertex projects inside an edge
@@ -156,19 +157,24 @@ Bad_tet classify_bad_tet(const Point& p0, const Point& p1, const Point& p2, cons
   }
   if(n == 2)
   {
-    out.shape = shares(shorts[0], shorts[1]) ? Bad_tet_shape::spear : Bad_tet_shape::spindle;
+    if(!shares(shorts[0], shorts[1]))
+    {
+      out.shape = Bad_tet_shape::spindle;
+      return out;
+    }
+    // The shared vertex b and the two far ends: in line (a splinter) or bent (a spear).
+    const int e = shorts[0], f = shorts[1];
+    const int b = edges[e][0] == edges[f][0] || edges[e][0] == edges[f][1] ? edges[e][0] : edges[e][1];
+    const int a = edges[e][0] == b ? edges[e][1] : edges[e][0];
+    const int c = edges[f][0] == b ? edges[f][1] : edges[f][0];
+    const V3 u = internal::sub(p[a], p[b]), w = internal::sub(p[c], p[b]);
+    const bool in_line = internal::dot(u, w) < -0.5 * std::sqrt(internal::dot(u, u) * internal::dot(w, w));
+    out.shape = in_line ? Bad_tet_shape::splinter : Bad_tet_shape::spear;
     return out;
   }
   if(n == 3)
   {
-    // Around a face: the three edges use three vertices only.
-    int used[4] = {0, 0, 0, 0};
-    for(int k = 0; k < 3; ++k)
-    {
-      used[edges[shorts[k]][0]] = 1;
-      used[edges[shorts[k]][1]] = 1;
-    }
-    out.shape = used[0] + used[1] + used[2] + used[3] == 3 ? Bad_tet_shape::spire : Bad_tet_shape::splinter;
+    out.shape = Bad_tet_shape::spire;
     return out;
   }
 

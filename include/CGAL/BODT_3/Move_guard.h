@@ -66,15 +66,17 @@ public:
     }
   }
 
-  /// Moves `v` by `X`, or by the longest of X/2, X/4, X/8 that is accepted.
+  /// Moves `v` by `X`, or by the longest of X/2, X/4, X/8 that is accepted;
+  /// each position goes through `place` first (NODT projects it on the boundary).
   /// Returns the fraction of X applied (0 when the vertex stays).
-  double move(int v, const Vector& X)
+  template <class Place>
+  double move(int v, const Vector& X, const Place& place)
   {
     const Point x0 = mesh_.points[v];
     double fraction = 1.0;
     for(int h = 0; h <= max_halvings; ++h, fraction *= 0.5)
     {
-      const Point p = x0 + fraction * X;
+      const Point p = place(x0 + fraction * X);
       if(p == x0) return 0.0;
       if(accepts(v, p))
       {
@@ -84,6 +86,11 @@ public:
       if(h == 0) first_refusal_ = last_refusal_;
     }
     return 0.0;
+  }
+
+  double move(int v, const Vector& X)
+  {
+    return move(v, X, [](const Point& p) { return p; });
   }
 
   /// Why the full-length move of the last refused vertex was refused.

@@ -36,6 +36,7 @@ namespace internal {
 CGAL_PRAGMA_DIAG_PUSH
 CGAL_IGNORE_BOOST_PARAMETER_NAME_WARNINGS
 BOOST_PARAMETER_NAME((moving_vertices_keyword, tag) moving_vertices_)
+BOOST_PARAMETER_NAME((smoothing_method_keyword, tag) smoothing_method_)
 BOOST_PARAMETER_NAME((preserve_features_keyword, tag) preserve_features_)
 BOOST_PARAMETER_NAME((quality_guard_keyword, tag) quality_guard_)
 BOOST_PARAMETER_NAME((topology_optimization_keyword, tag) topology_optimization_)
@@ -59,6 +60,7 @@ inline void set_parameter(Smoothing_options& o, cgal_tag::max_iteration_number_,
 }
 inline void set_parameter(Smoothing_options& o, cgal_tag::convergence_, double v) { o.convergence = v; }
 inline void set_parameter(Smoothing_options& o, tag::moving_vertices_, Moving_vertices v) { o.moving_vertices = v; }
+inline void set_parameter(Smoothing_options& o, tag::smoothing_method_, Smoothing_method v) { o.smoothing_method = v; }
 inline void set_parameter(Smoothing_options& o, tag::preserve_features_, bool v) { o.preserve_features = v; }
 inline void set_parameter(Smoothing_options& o, tag::quality_guard_, bool v) { o.quality_guard = v; }
 inline void set_parameter(Smoothing_options& o, tag::topology_optimization_, bool v) { o.topology_optimization = v; }
@@ -74,7 +76,8 @@ constexpr bool is_known_tag =
     std::is_same<Tag, cgal_tag::time_limit_>::value || std::is_same<Tag, cgal_tag::max_iteration_number_>::value ||
     std::is_same<Tag, cgal_tag::convergence_>::value || std::is_same<Tag, cgal_tag::freeze_bound_>::value ||
     std::is_same<Tag, cgal_tag::do_freeze_>::value || std::is_same<Tag, cgal_tag::sliver_bound_>::value ||
-    std::is_same<Tag, tag::moving_vertices_>::value || std::is_same<Tag, tag::preserve_features_>::value ||
+    std::is_same<Tag, tag::moving_vertices_>::value || std::is_same<Tag, tag::smoothing_method_>::value ||
+    std::is_same<Tag, tag::preserve_features_>::value ||
     std::is_same<Tag, tag::quality_guard_>::value || std::is_same<Tag, tag::topology_optimization_>::value ||
     std::is_same<Tag, tag::vertex_insertion_>::value || std::is_same<Tag, tag::max_vertex_insertions_>::value ||
     std::is_same<Tag, tag::feature_edge_ratio_>::value || std::is_same<Tag, tag::feature_corner_ratio_>::value ||
@@ -122,6 +125,10 @@ public:
   }
   Optimization_parameters convergence(double c) const { return with(CGAL::parameters::tag::convergence_(), c); }
   Optimization_parameters moving_vertices(Moving_vertices m) const { return with(internal::tag::moving_vertices_(), m); }
+  Optimization_parameters smoothing_method(Smoothing_method m) const
+  {
+    return with(internal::tag::smoothing_method_(), m);
+  }
   Optimization_parameters preserve_features(bool b) const { return with(internal::tag::preserve_features_(), b); }
   Optimization_parameters quality_guard(bool b) const { return with(internal::tag::quality_guard_(), b); }
   Optimization_parameters topology_optimization(bool b) const
@@ -199,6 +206,7 @@ inline constexpr BODT_3::internal::Dual_keyword<tag::time_limit_> time_limit{};
 inline constexpr BODT_3::internal::Dual_keyword<tag::max_iteration_number_> max_iteration_number{};
 inline constexpr BODT_3::internal::Dual_keyword<tag::convergence_> convergence{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::moving_vertices_> moving_vertices{};
+inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::smoothing_method_> smoothing_method{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::preserve_features_> preserve_features{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::quality_guard_> quality_guard{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::topology_optimization_> topology_optimization{};

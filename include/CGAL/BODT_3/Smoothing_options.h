@@ -22,6 +22,13 @@ enum class Moving_vertices
   NONE        // no smoothing: topology optimization (and insertion) alone
 };
 
+/// How boundary vertices move.
+enum class Smoothing_method
+{
+  BODT,   // on their tangent plane (Algorithms 2 and 3): the volume is kept exactly
+  NODT    // Natural ODT (Tournois et al. 2009), projected back on the input boundary: the paper's baseline
+};
+
 /// How the topology passes work (see flip_pass.h).
 struct Flip_options
 {
@@ -64,6 +71,9 @@ struct Smoothing_options
   /// (cube root of the mean volume of its cells) in a sweep; 0 disables the test.
   double convergence = 0;
   Moving_vertices moving_vertices = Moving_vertices::ALL;
+  /// NODT moves surface vertices (not feature vertices and corners, which move as
+  /// in B-ODT) off the boundary and back onto the input's boundary triangles.
+  Smoothing_method smoothing_method = Smoothing_method::BODT;
   bool preserve_features = true;           // false: Algorithm 2 for every boundary vertex
   bool quality_guard = true;               // refuse moves that worsen the star's extreme angles
   /// After each sweep, flips (edge removal, multi-face removal, coplanar boundary

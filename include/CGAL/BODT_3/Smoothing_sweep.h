@@ -3,7 +3,9 @@
 #ifndef CGAL_BODT_3_SMOOTHING_SWEEP_H
 #define CGAL_BODT_3_SMOOTHING_SWEEP_H
 
+#include <CGAL/BODT_3/Boundary_projection.h>
 #include <CGAL/BODT_3/Move_guard.h>
+#include <CGAL/BODT_3/Nodt_move.h>
 #include <CGAL/BODT_3/Smoothing_mesh.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Tensor_voting.h>
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -21,7 +24,8 @@ namespace BODT_3 {
 
 /// Smoothing sweeps over a `Smoothing_mesh`: every movable vertex, in
 /// `sweep_order`, gets its volume-preserving B-ODT move (`Volume_preserving_move`)
-/// through `Move_guard`. After the mesh's cells change (flips, insertion), call
+/// through `Move_guard` (with NODT, surface vertices get `Nodt_move`, projected on
+/// the boundary the mesh had when the sweeps began). After the mesh's cells change (flips, insertion), call
 /// `refresh` with the vertices whose stars changed.
 template <class K>
 class Smoothing_sweep
@@ -34,6 +38,7 @@ public:
     : mesh_(mesh), cls_(cls), opt_(opt), guard_(mesh, opt.quality_guard, bounds, opt.quality_measure),
       dirty_(mesh.number_of_vertices(), 1), moved_once_(mesh.number_of_vertices(), 0)
   {
+    if(opt.smoothing_method == Smoothing_method::NODT) projection_ = std::make_unique<Boundary_projection<K>>(mesh);
     derive();
   }
 
@@ -68,9 +73,10 @@ public:
         direction = nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]]
                                : tensor_vote(star, opt_.tensor_voting).direction;
       }
-      const Vector X = mover_(star, kind, direction);
+      const bool natural = projection_ && kind == Vertex_kind::surface;
+      const Vector X = natural ? Nodt_move()(star) : mover_(star, kind, direction);
       if(X == CGAL::NULL_VECTOR) continue;
-      const double fraction = guard_.move(v, X);
+      const double fraction = natural ? guard_.move(v, X, *projection_) : guard_.move(v, X);
       if(fraction == 0)
       {
         ++stats.refused;
@@ -206,6 +212,7 @@ private:
   const Smoothing_options& opt_;
   Move_guard<K> guard_;
   Volume_preserving_move mover_;
+  std::unique_ptr<Boundary_projection<K>> projection_;   // NODT: the input's boundary
   Sweep_order order_;
   std::vector<std::vector<int>> dependents_;
   std::vector<char> dirty_;

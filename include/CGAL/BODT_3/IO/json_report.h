@@ -85,6 +85,7 @@ inline void to_json(nlohmann::json& j, const Iteration_stats& s)
                        {"inverting_outside_cell", s.refused_inverting_outside_cell},
                        {"breaking_hull", s.refused_breaking_hull},
                        {"worsening_quality", s.refused_worsening_quality}}},
+                     {"max_min_moves", s.max_min_moves},
                      {"max_relative_move", s.max_relative_move},
                      {"topology", s.topology},
                      {"insertion", s.insertion},
@@ -109,12 +110,12 @@ inline void to_json(nlohmann::json& j, const Smoothing_result& r)
                      {"seconds", r.seconds}};
 }
 
-/// The name of `Moving_vertices` values as the command line spells them.
-inline const char* method_name(Moving_vertices m)
+/// The method as the command line spells it (`--method`).
+inline const char* method_name(const Smoothing_options& o)
 {
-  switch(m)
+  switch(o.moving_vertices)
   {
-  case Moving_vertices::ALL: return "bodt";
+  case Moving_vertices::ALL: return o.smoothing_method == Smoothing_method::NODT ? "nodt" : "bodt";
   case Moving_vertices::INTERIOR: return "odt";
   case Moving_vertices::NONE: return "flips";
   }
@@ -123,7 +124,7 @@ inline const char* method_name(Moving_vertices m)
 
 inline void to_json(nlohmann::json& j, const Smoothing_options& o)
 {
-  j = nlohmann::json{{"method", method_name(o.moving_vertices)},
+  j = nlohmann::json{{"method", method_name(o)},
                      {"max_iteration_number", o.max_iteration_number},
                      {"time_limit", o.time_limit},
                      {"convergence", o.convergence},
@@ -132,6 +133,9 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"topology_optimization", o.topology_optimization},
                      {"vertex_insertion", o.vertex_insertion},
                      {"max_vertex_insertions", o.max_vertex_insertions},
+                     {"max_min_threshold", o.max_min_threshold},
+                     {"flip_quality_threshold", o.flips.quality_threshold},
+                     {"insertion_quality_threshold", o.insertion.quality_threshold},
                      {"tensor_voting",
                       {{"edge_ratio", o.tensor_voting.edge_ratio},
                        {"corner_ratio", o.tensor_voting.corner_ratio},

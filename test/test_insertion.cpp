@@ -1,0 +1,425 @@
+// Vertex insertion: the shapes of bad tetrahedra on constructed tetrahedra; edge
+// and facet splits with their labels (subdomains, patches, curves, vertex
+// dimensions), volume and validity, and their undo; the budget; and the pipeline
+// with insertion over CGAL-meshed inputs and through a file mesh.
+#include "inputs/generated_inputs.h"
+
+#include <CGAL/BODT_3/Bad_tet_shape.h>
+#include <CGAL/BODT_3/IO/c3t3_conversion.h>
+#include <CGAL/BODT_3/Vertex_insertion.h>
+#include <CGAL/BODT_3/mesh_quality.h>
+#include <CGAL/BODT_3/smooth.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace BODT = CGAL::BODT_3;
+using BODT::Bad_tet_shape;
+using BODT::Tet_mesh;
+using Point = Tet_mesh::Point;
+using File_c3t3 = BODT::Tet_mesh_c3t3;
+using Vertex_handle = File_c3t3::Vertex_handle;
+using Labels = BODT::C3t3_labels<File_c3t3>;
+
+namespace {
+
+Bad_tet_shape shape_of(Point a, Point b, Point c, Point d)
+{
+  if(CGAL::orientation(a, b, c, d) != CGAL::POSITIVE) std::swap(c, d);
+  BODT::Bad_tet_options opt;
+  opt.small_angle = 45;   // loose bounds: the shapes, not their badness, are under test
+  opt.large_angle = 135;
+  return BODT::classify_bad_tet(a, b, c, d, opt).shape;
+}
+
+Tet_mesh make_mesh(const std::vector<Point>& points, std::vector<std::array<int, 4>> tets, std::vector<int> labels = {})
+{
+  Tet_mesh m;
+  m.points = points;
+  m.vertex_refs.assign(points.size(), 0);
+  for(auto& t : tets)
+    if(CGAL::orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
+      std::swap(t[2], t[3]);
+  m.tets = tets;
+  m.tet_labels = labels.empty() ? std::vector<int>(tets.size(), 1) : labels;
+  return m;
+}
+
+Point bare(const File_c3t3& c3t3, Vertex_handle v)
+{
+  return c3t3.triangulation().geom_traits().construct_point_3_object()(v->point());
+}
+
+// What a split and its undo must keep or restore.
+struct State
+{
+  std::map<int, double> volume;
+  std::map<int, double> patch_area;
+  std::set<std::array<Point, 4>> cells;   // sorted points, in the complex
+  std::size_t vertices = 0, facets = 0, edges = 0;
+};
+
+State state(const File_c3t3& c3t3)
+{
+  State s;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    std::array<Point, 4> p = {bare(c3t3, c->vertex(0)), bare(c3t3, c->vertex(1)), bare(c3t3, c->vertex(2)),
+                              bare(c3t3, c->vertex(3))};
+    s.volume[c3t3.subdomain_index(c)] += CGAL::volume(p[0], p[1], p[2], p[3]);
+    std::sort(p.begin(), p.end());
+    s.cells.insert(p);
+  }
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    s.patch_area[c3t3.surface_patch_index(*f)] += std::sqrt(c3t3.triangulation().triangle(*f).squared_area());
+  s.vertices = c3t3.triangulation().number_of_vertices();
+  s.facets = c3t3.number_of_facets_in_complex();
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) ++s.edges;
+  return s;
+}
+
+void expect_valid(const File_c3t3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  EXPECT_TRUE(tr.tds().is_valid());
+  std::size_t bad = 0, in_complex = 0, facets = 0;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+  {
+    if(CGAL::orientation(bare(c3t3, c->vertex(0)), bare(c3t3, c->vertex(1)), bare(c3t3, c->vertex(2)),
+                         bare(c3t3, c->vertex(3))) != CGAL::POSITIVE)
+      ++bad;
+    if(c3t3.is_in_complex(c)) ++in_complex;
+  }
+  for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      if(c3t3.is_in_complex(c, i))
+      {
+        ++facets;
+        EXPECT_EQ(c3t3.surface_patch_index(c, i), c3t3.surface_patch_index(c->neighbor(i), c->neighbor(i)->index(c)));
+      }
+  EXPECT_EQ(bad, 0u);
+  EXPECT_EQ(in_complex, c3t3.number_of_cells_in_complex());
+  EXPECT_EQ(facets, 2 * c3t3.number_of_facets_in_complex());
+}
+
+void expect_same_volumes(const State& a, const State& b)
+{
+  ASSERT_EQ(a.volume.size(), b.volume.size());
+  for(const auto& kv : a.volume) EXPECT_NEAR(b.volume.at(kv.first), kv.second, 1e-12 * std::abs(kv.second));
+  ASSERT_EQ(a.patch_area.size(), b.patch_area.size());
+  for(const auto& kv : a.patch_area) EXPECT_NEAR(b.patch_area.at(kv.first), kv.second, 1e-12 * kv.second);
+}
+
+// Six tets around the axis edge (0, 1) of a hexagonal bipyramid, in two subdomains
+// (1 above y = 0, 2 below), with the outer faces labelled by the file as patches.
+Tet_mesh bipyramid()
+{
+  std::vector<Point> p = {Point(0, 0, -1), Point(0, 0, 1)};
+  for(int k = 0; k < 6; ++k) p.emplace_back(std::cos(k * 3.14159265358979323846 / 3), std::sin(k * 3.14159265358979323846 / 3), 0.1 * (k % 2));
+  std::vector<std::array<int, 4>> t;
+  std::vector<int> labels;
+  for(int k = 0; k < 6; ++k)
+  {
+    t.push_back({0, 1, 2 + k, 2 + (k + 1) % 6});
+    labels.push_back(k < 3 ? 1 : 2);
+  }
+  return make_mesh(p, t, labels);
+}
+
+} // namespace
+
+TEST(Bad_tet_shapes, EachShapeOnAConstructedTetrahedron)
+{
+  // Good: the regular tetrahedron.
+  EXPECT_EQ(shape_of(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)), Bad_tet_shape::good);
+  // One short edge a b over the middle of c d: a wedge; beyond its end: a spike.
+  EXPECT_EQ(shape_of(Point(-0.05, 0, 0.5), Point(0.05, 0, 0.5), Point(0, -1, 0), Point(0, 1, 0)), Bad_tet_shape::wedge);
+  EXPECT_EQ(shape_of(Point(-0.05, 2, 0.5), Point(0.05, 2, 0.5), Point(0, -1, 0), Point(0, 1, 0)), Bad_tet_shape::spike);
+  // Two short edges sharing b: bent at b, a spear; nearly straight, a splinter.
+  EXPECT_EQ(shape_of(Point(0, 0, 0), Point(0.22, 0.14, 0), Point(0.44, 0, 0), Point(0.22, 0.05, 1.1)),
+            Bad_tet_shape::spear);
+  EXPECT_EQ(shape_of(Point(0, 0, 0), Point(0.25, 0.02, 0), Point(0.5, 0, 0.03), Point(0.25, 0.3, 1.5)),
+            Bad_tet_shape::splinter);
+  // Two opposite short edges: a spindle.
+  EXPECT_EQ(shape_of(Point(0, 0, 0), Point(0.1, 0.05, 0), Point(0, 0.1, 1.5), Point(0.08, 0, 1.5)),
+            Bad_tet_shape::spindle);
+  // Three short edges around a face (a thin base, far apex): a spire.
+  EXPECT_EQ(shape_of(Point(0, 0, 0), Point(0.2, 0, 0), Point(0.1, 0.01, 0), Point(0.05, 0.05, 1.5)),
+            Bad_tet_shape::spire);
+  // Flat, no short edge: a vertex over the inside of its face, a cap; over an edge of
+  // it, a spade; two crossing edges, a sliver.
+  EXPECT_EQ(shape_of(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0.3, 0.3, 0.05)), Bad_tet_shape::cap);
+  EXPECT_EQ(shape_of(Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 0.9, 0), Point(0.5, -0.02, 0.03)),
+            Bad_tet_shape::spade);
+  EXPECT_EQ(shape_of(Point(1, 0, 0.05), Point(0, 1, -0.05), Point(-1, 0, 0.05), Point(0, -1, -0.05)),
+            Bad_tet_shape::sliver);
+}
+
+TEST(Bad_tet_shapes, WhereToSplit)
+{
+  BODT::Bad_tet_options opt;
+  opt.small_angle = 30;
+  opt.large_angle = 150;
+  // A cap over (0.3, 0.3) of its face: the barycentric coordinates of that point.
+  Point a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), d(0.3, 0.3, 0.05);
+  if(CGAL::orientation(a, b, c, d) != CGAL::POSITIVE) std::swap(a, b);
+  const auto cap = BODT::classify_bad_tet(a, b, c, d, opt);
+  ASSERT_EQ(cap.shape, Bad_tet_shape::cap);
+  EXPECT_EQ(cap.vertex, 3);
+  const Point p[3] = {a, b, c};
+  double x = 0, y = 0, s = 0;
+  for(int k = 0; k < 3; ++k)
+  {
+    x += cap.bary[k] * p[k].x();
+    y += cap.bary[k] * p[k].y();
+    s += cap.bary[k];
+  }
+  EXPECT_NEAR(x / s, 0.3, 1e-12);
+  EXPECT_NEAR(y / s, 0.3, 1e-12);
+  // A sliver: its crossing edges meet halfway along both.
+  const auto sliver = BODT::classify_bad_tet(Point(1, 0, 0.05), Point(-1, 0, 0.05), Point(0, 1, -0.05),
+                                             Point(0, -1, -0.05), opt);
+  ASSERT_EQ(sliver.shape, Bad_tet_shape::sliver);
+  EXPECT_NEAR(sliver.t[0], 0.5, 1e-12);
+  EXPECT_NEAR(sliver.t[1], 0.5, 1e-12);
+}
+
+// An edge inside one subdomain: every cell around it splits in two, the volume
+// stays, the new vertex is interior (dimension 3); undone, all comes back.
+TEST(Splits, InteriorEdgeAndItsUndo)
+{
+  std::vector<Point> p = {Point(0, 0, -1), Point(0, 0, 1)};
+  for(int k = 0; k < 5; ++k) p.emplace_back(std::cos(k * 1.2566370614359172), std::sin(k * 1.2566370614359172), 0);
+  std::vector<std::array<int, 4>> t;
+  for(int k = 0; k < 5; ++k) t.push_back({0, 1, 2 + k, 2 + (k + 1) % 5});
+  File_c3t3 c3t3;
+  std::vector<Vertex_handle> h;
+  BODT::tet_mesh_to_c3t3(make_mesh(p, t), c3t3, "test", &h);
+  const State before = state(c3t3);
+  Labels labels(c3t3, false);
+  File_c3t3::Cell_handle c;
+  int i, j;
+  ASSERT_TRUE(c3t3.triangulation().tds().is_edge(h[0], h[1], c, i, j));
+  BODT::Split_record<Labels> r;
+  ASSERT_TRUE(BODT::split_edge(labels, c, i, j, Point(0, 0, 0.2), r));
+  expect_valid(c3t3);
+  const State after = state(c3t3);
+  expect_same_volumes(before, after);
+  EXPECT_EQ(after.cells.size(), 10u);
+  EXPECT_EQ(after.vertices, before.vertices + 1);
+  EXPECT_EQ(c3t3.in_dimension(r.vertex), 3);
+  EXPECT_TRUE(r.boundary.empty());
+  BODT::undo_split(labels, r);
+  expect_valid(c3t3);
+  const State undone = state(c3t3);
+  EXPECT_EQ(undone.cells, before.cells);
+  EXPECT_EQ(undone.vertices, before.vertices);
+  EXPECT_EQ(undone.facets, before.facets);
+}
+
+// A boundary edge of the bipyramid: splitting it keeps both subdomains' volumes,
+// and its two boundary facets become four with their patch.
+TEST(Splits, BoundaryEdgeKeepsPatchesAndVolumes)
+{
+  File_c3t3 c3t3;
+  std::vector<Vertex_handle> h;
+  BODT::tet_mesh_to_c3t3(bipyramid(), c3t3, "test", &h);
+  const State before = state(c3t3);
+  Labels labels(c3t3, false);
+  File_c3t3::Cell_handle c;
+  int i, j;
+  // An edge on the outer boundary, within subdomain 1 (edge (0, 2) would be on the interface too).
+  ASSERT_TRUE(c3t3.triangulation().tds().is_edge(h[0], h[3], c, i, j));
+  const Point mid = CGAL::midpoint(bare(c3t3, h[0]), bare(c3t3, h[3]));
+  BODT::Split_record<Labels> r;
+  ASSERT_TRUE(BODT::split_edge(labels, c, i, j, mid, r));
+  expect_valid(c3t3);
+  const State after = state(c3t3);
+  expect_same_volumes(before, after);
+  EXPECT_EQ(after.facets, before.facets + 2);   // its two boundary facets became four
+  EXPECT_EQ(c3t3.in_dimension(r.vertex), 2);
+  EXPECT_EQ(r.boundary.size(), 2u);
+  BODT::undo_split(labels, r);
+  expect_valid(c3t3);
+  EXPECT_EQ(state(c3t3).cells, before.cells);
+  EXPECT_EQ(state(c3t3).facets, before.facets);
+}
+
+// A curve edge splits into two edges of the same curve; the new vertex is on the
+// curve (dimension 1), and the mesh written back lists the halves in its place.
+TEST(Splits, CurveEdgeBecomesTwoAndTheFileFollows)
+{
+  Tet_mesh mesh = bipyramid();
+  mesh.edges = {{0, 2}, {0, 3}};
+  mesh.edge_labels = {7, 8};
+  mesh.ridges = {0};
+  File_c3t3 c3t3;
+  std::vector<Vertex_handle> h;
+  BODT::tet_mesh_to_c3t3(mesh, c3t3, "test", &h);
+  Labels labels(c3t3, false);
+  File_c3t3::Cell_handle c;
+  int i, j;
+  ASSERT_TRUE(c3t3.triangulation().tds().is_edge(h[0], h[2], c, i, j));
+  const int curve = c3t3.curve_index(h[0], h[2]);
+  BODT::Split_record<Labels> r;
+  ASSERT_TRUE(BODT::split_edge(labels, c, i, j, CGAL::midpoint(bare(c3t3, h[0]), bare(c3t3, h[2])), r));
+  expect_valid(c3t3);
+  EXPECT_EQ(c3t3.in_dimension(r.vertex), 1);
+  EXPECT_FALSE(c3t3.is_in_complex(h[0], h[2]));
+  EXPECT_EQ(c3t3.curve_index(h[0], r.vertex), curve);
+  EXPECT_EQ(c3t3.curve_index(r.vertex, h[2]), curve);
+
+  Tet_mesh out = mesh;
+  BODT::update_tet_mesh(out, c3t3, h);
+  ASSERT_EQ(out.points.size(), mesh.points.size() + 1);
+  const int e = static_cast<int>(mesh.points.size());
+  EXPECT_EQ(out.points[e], CGAL::midpoint(mesh.points[0], mesh.points[2]));
+  ASSERT_EQ(out.edges.size(), 3u);
+  EXPECT_EQ(out.edges[0], (std::array<int, 2>{0, e}));
+  EXPECT_EQ(out.edges[1], (std::array<int, 2>{e, 2}));
+  EXPECT_EQ(out.edges[2], (std::array<int, 2>{0, 3}));
+  EXPECT_EQ(out.edge_labels, (std::vector<int>{7, 7, 8}));
+  EXPECT_EQ(out.ridges, (std::vector<int>{0, 1}));
+  EXPECT_EQ(out.tets.size(), mesh.tets.size() + 2);   // the two cells around (0, 2) became four
+
+  BODT::undo_split(labels, r);
+  expect_valid(c3t3);
+  EXPECT_TRUE(c3t3.is_in_complex(h[0], h[2]));
+  EXPECT_EQ(c3t3.curve_index(h[0], h[2]), curve);
+}
+
+// A facet: its two cells become six; a boundary facet becomes three of its patch.
+TEST(Splits, InteriorAndBoundaryFacets)
+{
+  for(bool interface : {true, false})
+  {
+    SCOPED_TRACE(interface ? "interface facet" : "boundary facet");
+    File_c3t3 c3t3;
+    std::vector<Vertex_handle> h;
+    BODT::tet_mesh_to_c3t3(bipyramid(), c3t3, "test", &h);
+    const State before = state(c3t3);
+    Labels labels(c3t3, false);
+    // The interface facet (0, 1, 5) between subdomains 1 and 2; the boundary facet (0, 2, 3).
+    File_c3t3::Cell_handle c;
+    int i, j, k;
+    const Vertex_handle a = h[0], b = interface ? h[1] : h[2], d = interface ? h[5] : h[3];
+    ASSERT_TRUE(c3t3.triangulation().tds().is_facet(a, b, d, c, i, j, k));
+    const int f = 6 - i - j - k;
+    const Point p((bare(c3t3, a).x() + bare(c3t3, b).x() + bare(c3t3, d).x()) / 3,
+                  (bare(c3t3, a).y() + bare(c3t3, b).y() + bare(c3t3, d).y()) / 3,
+                  (bare(c3t3, a).z() + bare(c3t3, b).z() + bare(c3t3, d).z()) / 3);
+    BODT::Split_record<Labels> r;
+    ASSERT_TRUE(BODT::split_facet(labels, c, f, p, r));
+    expect_valid(c3t3);
+    const State after = state(c3t3);
+    expect_same_volumes(before, after);
+    EXPECT_EQ(after.facets, before.facets + 2);
+    EXPECT_EQ(c3t3.in_dimension(r.vertex), 2);
+    EXPECT_EQ(after.cells.size(), before.cells.size() + (interface ? 4u : 2u));
+    BODT::undo_split(labels, r);
+    expect_valid(c3t3);
+    EXPECT_EQ(state(c3t3).cells, before.cells);
+    EXPECT_EQ(state(c3t3).facets, before.facets);
+  }
+}
+
+// A split that would make a cell inside out is refused and changes nothing.
+TEST(Splits, AnInvertingPointIsRefused)
+{
+  File_c3t3 c3t3;
+  std::vector<Vertex_handle> h;
+  BODT::tet_mesh_to_c3t3(bipyramid(), c3t3, "test", &h);
+  const State before = state(c3t3);
+  Labels labels(c3t3, false);
+  File_c3t3::Cell_handle c;
+  int i, j;
+  ASSERT_TRUE(c3t3.triangulation().tds().is_edge(h[0], h[1], c, i, j));
+  BODT::Split_record<Labels> r;
+  EXPECT_FALSE(BODT::split_edge(labels, c, i, j, Point(3, 0, 0), r));   // far off the edge
+  expect_valid(c3t3);
+  EXPECT_EQ(state(c3t3).cells, before.cells);
+  EXPECT_EQ(state(c3t3).vertices, before.vertices);
+}
+
+// The pipeline with insertion over CGAL-meshed inputs: within the budget, every
+// subdomain's volume kept, no inverted cell, a valid complex, corners where they
+// were, curve edges forming the same curves, and better than the input.
+class Insertion_pipeline : public ::testing::TestWithParam<bodt_inputs::Shape>
+{};
+
+TEST_P(Insertion_pipeline, KeepsLabelsVolumesAndValidity)
+{
+  using namespace bodt_inputs;
+  const Generated_mesh input = make_input(GetParam(), Size::small);
+  C3t3 c3t3 = input.c3t3;
+  const auto before = BODT::mesh_quality(c3t3);
+  auto cp = c3t3.triangulation().geom_traits().construct_point_3_object();
+  std::set<Point> corners;
+  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
+    corners.insert(cp(v->point()));
+  std::size_t curve_edges_before = 0;
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) ++curve_edges_before;
+
+  const std::size_t n = c3t3.triangulation().number_of_vertices();
+  const auto r = BODT::smooth(c3t3, BODT::Smoothing_options());
+  const auto after = BODT::mesh_quality(c3t3);
+
+  EXPECT_LE(r.insertion.vertices_added, static_cast<std::size_t>(std::ceil(0.05 * double(n))));
+  EXPECT_EQ(c3t3.triangulation().number_of_vertices(), n + r.insertion.vertices_added);
+  EXPECT_TRUE(c3t3.triangulation().tds().is_valid());
+  EXPECT_TRUE(c3t3.is_valid());
+  std::size_t bad = 0;
+  for(auto c = c3t3.triangulation().finite_cells_begin(); c != c3t3.triangulation().finite_cells_end(); ++c)
+    if(CGAL::orientation(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
+                         cp(c->vertex(3)->point())) != CGAL::POSITIVE)
+      ++bad;
+  EXPECT_EQ(bad, 0u);
+  for(const auto& kv : before.volume_per_subdomain)
+    EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second);
+  std::set<Point> corners_after;
+  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
+    corners_after.insert(cp(v->point()));
+  EXPECT_EQ(corners_after, corners);
+  // A curve split at a new vertex has one more edge; curve vertices stay on curves.
+  std::size_t curve_edges = 0;
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e)
+  {
+    ++curve_edges;
+    EXPECT_LE(c3t3.in_dimension(e->first->vertex(e->second)), 1);
+    EXPECT_LE(c3t3.in_dimension(e->first->vertex(e->third)), 1);
+  }
+  EXPECT_GE(curve_edges, curve_edges_before);
+  EXPECT_LE(curve_edges, curve_edges_before + r.insertion.vertices_added);
+  EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg);
+  EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg);
+}
+
+INSTANTIATE_TEST_SUITE_P(All, Insertion_pipeline, ::testing::ValuesIn(bodt_inputs::all_shapes()),
+                         [](const ::testing::TestParamInfo<bodt_inputs::Shape>& info) {
+                           return bodt_inputs::name(info.param);
+                         });
+
+// The budget caps the vertices added; 0 adds none.
+TEST(Insertion_budget, CapsTheVerticesAdded)
+{
+  using namespace bodt_inputs;
+  const Generated_mesh input = make_input(Shape::genus2, Size::small);
+  std::size_t unlimited = 0;
+  for(long long budget : {-1LL, 0LL, 3LL})
+  {
+    C3t3 c3t3 = input.c3t3;
+    BODT::Smoothing_options opt;
+    opt.max_vertex_insertions = budget;
+    const auto r = BODT::smooth(c3t3, opt);
+    if(budget < 0)
+      unlimited = r.insertion.vertices_added;
+    else
+      EXPECT_LE(r.insertion.vertices_added, static_cast<std::size_t>(budget));
+    if(budget == 0) EXPECT_EQ(r.insertion.vertices_added, 0u);
+  }
+  EXPECT_GT(unlimited, 3u) << "the small genus-2 mesh needs insertions; the test loses its point otherwise";
+}
