@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The pipeline's stages measured one by one, in one run: B-ODT smoothing alone,
-// flips alone, and the default pipeline, on the generated Mesh_3 inputs (and mesh
+// flips alone, flips with and without the max-min fallback and insertion (the
+// last variant is the default pipeline), on the generated Mesh_3 inputs (and mesh
 // files given on the command line). For each: the extreme dihedral angles, the bad
 // tetrahedra (below 10 or above 170 degrees) by where they are, the flips by kind,
 // the mean time of a smoothing sweep and of a flip pass per iteration, and the
@@ -93,12 +94,15 @@ struct Variant
   const char* name;
   BODT::Moving_vertices moving;
   bool flips;
+  bool max_min;   // the max-min fallback after the flips
   bool insertion;
 };
-const Variant variants[] = {{"B-ODT, no flips", BODT::Moving_vertices::ALL, false, false},
-                            {"flips alone", BODT::Moving_vertices::NONE, true, false},
-                            {"B-ODT + flips", BODT::Moving_vertices::ALL, true, false},
-                            {"B-ODT + flips + insertion", BODT::Moving_vertices::ALL, true, true}};
+const Variant variants[] = {{"B-ODT, no flips", BODT::Moving_vertices::ALL, false, false, false},
+                            {"flips alone", BODT::Moving_vertices::NONE, true, false, false},
+                            {"B-ODT + flips", BODT::Moving_vertices::ALL, true, false, false},
+                            {"B-ODT + flips + max-min", BODT::Moving_vertices::ALL, true, true, false},
+                            {"B-ODT + flips + insertion", BODT::Moving_vertices::ALL, true, false, true},
+                            {"B-ODT + flips + max-min + insertion", BODT::Moving_vertices::ALL, true, true, true}};
 
 BODT::Flip_options flip_options;
 std::size_t worst_listed = 0;
@@ -154,6 +158,7 @@ void run(const std::string& label, const Mesh& input, std::size_t iterations)
     opt.moving_vertices = v.moving;
     opt.topology_optimization = v.flips;
     opt.vertex_insertion = v.insertion;
+    if(!v.max_min) opt.max_min_threshold = 0;
     opt.flips = flip_options;
     Totals t;
     const auto r = BODT::smooth(m, opt, t);

@@ -98,6 +98,7 @@ BODT::Smoothing_options options_of(const py::dict& given)
     else if(key == "topology_optimization") o.topology_optimization = v.cast<bool>();
     else if(key == "vertex_insertion") o.vertex_insertion = v.cast<bool>();
     else if(key == "max_vertex_insertions") o.max_vertex_insertions = v.cast<long long>();
+    else if(key == "max_min_threshold") o.max_min_threshold = v.cast<double>();
     else if(key == "feature_edge_ratio") o.tensor_voting.edge_ratio = v.cast<double>();
     else if(key == "feature_corner_ratio") o.tensor_voting.corner_ratio = v.cast<double>();
     else throw py::type_error("smooth() got an unexpected option '" + key + "'");

@@ -142,7 +142,7 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   const fs::path report = dir / "r \"1\".json";
   std::string out;
   ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --report " + q(report) +
-                         " --iterations 5 --no-insertion --max-insertions 7 --quiet",
+                         " --iterations 5 --no-insertion --max-insertions 7 --max-min-threshold 0.2 --quiet",
                      out, dir),
             0)
       << out;
@@ -153,6 +153,7 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_EQ(j.at("options").at("vertex_insertion"), false);
   EXPECT_EQ(j.at("options").at("topology_optimization"), true);
   EXPECT_EQ(j.at("options").at("max_vertex_insertions"), 7);
+  EXPECT_EQ(j.at("options").at("max_min_threshold"), 0.2);
   EXPECT_EQ(j.at("options").at("method"), "bodt");
   const nlohmann::json& r = j.at("result");
   EXPECT_EQ(r.at("return_code"), "MAX_ITERATION_NUMBER_REACHED");

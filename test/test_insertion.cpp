@@ -416,7 +416,11 @@ TEST(Insertion_budget, CapsTheVerticesAdded)
     opt.max_vertex_insertions = budget;
     const auto r = BODT::smooth(c3t3, opt);
     if(budget < 0)
+    {
+      // The default budget: at most 5% of the input's vertices.
       unlimited = r.insertion.vertices_added;
+      EXPECT_LE(double(unlimited), 0.05 * double(input.c3t3.triangulation().number_of_vertices()));
+    }
     else
       EXPECT_LE(r.insertion.vertices_added, static_cast<std::size_t>(budget));
     if(budget == 0) EXPECT_EQ(r.insertion.vertices_added, 0u);

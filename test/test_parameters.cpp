@@ -63,6 +63,8 @@ TEST(Parameters, ChainSetsEveryOption)
                      .topology_optimization(false)
                      .vertex_insertion(false)
                      .max_vertex_insertions(12)
+                     .max_min_threshold(0.25)
+                     .smoothing_method(BODT::Smoothing_method::NODT)
                      .feature_edge_ratio(0.2)
                      .feature_corner_ratio(0.3);
   const BODT::Smoothing_options& o = p.options();
@@ -75,6 +77,8 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_FALSE(o.topology_optimization);
   EXPECT_FALSE(o.vertex_insertion);
   EXPECT_EQ(o.max_vertex_insertions, 12);
+  EXPECT_EQ(o.max_min_threshold, 0.25);
+  EXPECT_EQ(o.smoothing_method, BODT::Smoothing_method::NODT);
   EXPECT_EQ(o.tensor_voting.edge_ratio, 0.2);
   EXPECT_EQ(o.tensor_voting.corner_ratio, 0.3);
 
@@ -83,6 +87,8 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_TRUE(d.topology_optimization);
   EXPECT_TRUE(d.vertex_insertion);
   EXPECT_EQ(d.max_vertex_insertions, -1);
+  EXPECT_EQ(d.max_min_threshold, defaults.max_min_threshold);
+  EXPECT_EQ(d.smoothing_method, BODT::Smoothing_method::BODT);
   EXPECT_EQ(d.max_iteration_number, defaults.max_iteration_number);
 }
 

@@ -163,7 +163,10 @@ void expect_kept(const Snapshot& before, const Snapshot& after, bool same_facets
     EXPECT_NEAR(after.volume.at(kv.first), kv.second, 1e-14 * std::abs(kv.second)) << "subdomain " << kv.first;
   for(const auto& kv : before.patch_area)
     EXPECT_NEAR(after.patch_area.at(kv.first), kv.second, 1e-12 * kv.second) << "patch " << kv.first;
-  if(same_facets) EXPECT_EQ(before.facets, after.facets);
+  if(same_facets)
+  {
+    EXPECT_EQ(before.facets, after.facets);
+  }
 }
 
 // Cells (u, v, r_k, r_{k+1}) around the axis edge u v of a ring of m points on the
@@ -247,8 +250,14 @@ TEST(Quality_measure, BoundsAgreeWithTheAngles)
     const bool expected = mm.first >= lo - 1e-9 && mm.second <= hi + 1e-9;
     const bool clearly = mm.first >= lo + 1e-9 && mm.second <= hi - 1e-9;
     const bool got = bounds.contains(t[0], t[1], t[2], t[3], BODT::min_dihedral_sine(t[0], t[1], t[2], t[3]));
-    if(clearly) EXPECT_TRUE(got);
-    if(!expected) EXPECT_FALSE(got);
+    if(clearly)
+    {
+      EXPECT_TRUE(got);
+    }
+    if(!expected)
+    {
+      EXPECT_FALSE(got);
+    }
     inside += got ? 1 : 0;
   }
   EXPECT_GT(inside, 20);

@@ -128,7 +128,10 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
 ///    optimization and insertion alone);
 ///  - `preserve_features` (default true), `quality_guard` (default true);
 ///  - `topology_optimization` (default true), `vertex_insertion` (default true),
-///    `max_vertex_insertions` (default -1: 5% of the input's vertices);
+///    `max_vertex_insertions` (default -1: 5% of the input's vertices),
+///    `max_min_threshold` (default 0.34: stars whose worst dihedral sine is below it
+///    get max-min steps after the flips; 0: off);
+///  - `smoothing_method`: `BODT_3::Smoothing_method::BODT` (default) or `NODT`;
 ///  - `feature_edge_ratio`, `feature_corner_ratio`: tensor voting thresholds;
 ///  - `progress_visitor`: an object with `after_classification(const BODT_3::Smoothing_result&)`
 ///    and `after_iteration(const BODT_3::Iteration_stats&)`, copied.

@@ -97,7 +97,8 @@ Command add_compare(CLI::App& command, const std::string& command_line)
   o->program = command_line;
   command.footer(
       "Runs every smoothing method side by side and measures the results: the input, interior-only ODT,\n"
-      "B-ODT basic (Algorithm 2) and advanced (Algorithm 3, the default), and on Mesh_3 outputs CGAL's\n"
+      "flips alone, NODT, B-ODT smoothing alone, the pipeline without insertion, the basic and the default\n"
+      "pipeline (B-ODT, flips, max-min, insertion), and on Mesh_3 outputs CGAL's\n"
       "odt_optimize_mesh_3, lloyd_optimize_mesh_3, perturb_mesh_3 + exude_mesh_3 and\n"
       "tetrahedral_isotropic_remeshing. With no file named, the inputs are the benchmark's: the generated\n"
       "Mesh_3 meshes, the random sphere, and CGAL's data surfaces found in the data folder (meshed by\n"

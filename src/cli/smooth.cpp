@@ -169,6 +169,10 @@ Command add_smooth(CLI::App& command)
   command.add_option("--max-insertions", o->smoothing.max_vertex_insertions,
                      "insert at most N vertices (default -1: 5% of the input's vertices)")
       ->check(CLI::Range(-1LL, 1000000000LL));
+  command.add_option("--max-min-threshold", o->smoothing.max_min_threshold,
+                     "max-min steps at the vertices whose worst tetrahedron has a dihedral sine below S "
+                     "(default 0.34, about 20 degrees; 0: off)")
+      ->check(CLI::Range(0., 1.));
   command.add_option("--report", o->report, "write a JSON report: options, every sweep, quality before and after");
   command.add_option("--html", o->html,
                      "write a self-contained HTML page: quality table, subdomain volumes and the dihedral-angle "

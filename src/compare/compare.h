@@ -20,6 +20,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -58,7 +59,8 @@ struct Input
   Mesh mesh;
 };
 
-/// The generated inputs (generated_inputs.h) and the paper's random sphere.
+/// The generated inputs (generated_inputs.h), the paper's Random Sphere rebuilt,
+/// and a Delaunay triangulation of points on the sphere (a Triangulation_3 input).
 std::vector<Input> generated_inputs(bodt_inputs::Size size);
 
 /// CGAL's data surfaces looked for in the data folder, with what they stand for.
@@ -89,6 +91,8 @@ std::string outcome_name(CGAL::Mesh_optimization_return_code code);
 /// (0 for a method without iterations) and how it ended.
 struct Run
 {
+  Run(std::size_t n = 0, std::string how = std::string()) : iterations(n), outcome(std::move(how)) {}
+
   std::size_t iterations = 0;
   std::string outcome;
   BODT::Topology_stats flips;   // our methods: flips done
@@ -113,7 +117,9 @@ extern const char* const original_name;                 // the input, unchanged
 extern const char* const odt_interior_name;             // the paper's baseline: interior ODT, no flips
 extern const char* const bodt_no_flips_name;            // B-ODT smoothing alone
 extern const char* const flips_name;                    // topology optimization alone
-extern const char* const bodt_basic_name;               // Algorithm 2 everywhere on the boundary, with flips
+extern const char* const nodt_name;                     // Natural ODT smoothing alone (the paper's comparison)
+extern const char* const bodt_flips_name;               // the default pipeline without vertex insertion
+extern const char* const bodt_basic_name;               // the default pipeline, Algorithm 2 on every boundary vertex
 extern const char* const bodt_name;                     // the default pipeline
 extern const char* const after_perturb_exude_name;      // the default pipeline after make_mesh_3's default
 extern const char* const cgal_odt_name;                 // the reference for throughput ratios

@@ -21,9 +21,11 @@ const char* const original_name = "original";
 const char* const odt_interior_name = "ODT (paper's baseline)";
 const char* const bodt_no_flips_name = "B-ODT, no flips";
 const char* const flips_name = "flips alone";
-const char* const bodt_basic_name = "B-ODT basic + flips";
-const char* const bodt_name = "B-ODT + flips";
-const char* const after_perturb_exude_name = "perturb+exude, then B-ODT + flips";
+const char* const nodt_name = "NODT";
+const char* const bodt_flips_name = "B-ODT + flips, no insertion";
+const char* const bodt_basic_name = "B-ODT basic pipeline";
+const char* const bodt_name = "B-ODT pipeline";
+const char* const after_perturb_exude_name = "perturb+exude, then B-ODT pipeline";
 const char* const cgal_odt_name = "CGAL ODT";
 const char* const cgal_odt_perturb_exude_name = "CGAL ODT + perturb+exude";
 
@@ -36,13 +38,28 @@ struct Iteration_counter
   void after_iteration(const BODT::Iteration_stats& s) const { *iterations = s.iteration; }
 };
 
-// What our pipeline runs: smoothing (which vertices), flips, features.
+// What our pipeline runs: smoothing (which vertices, which method), flips,
+// vertex insertion, the max-min fallback, features. The defaults are the defaults
+// of `bodt_optimize_mesh_3`.
 struct Ours
 {
   BODT::Moving_vertices moving = BODT::Moving_vertices::ALL;
   bool flips = true;
+  bool insertion = true;
+  bool max_min = true;
   bool preserve_features = true;
+  BODT::Smoothing_method method = BODT::Smoothing_method::BODT;
 };
+
+// One stage alone: no flips, no insertion, no max-min fallback.
+Ours smoothing_only(BODT::Moving_vertices moving, BODT::Smoothing_method method = BODT::Smoothing_method::BODT)
+{
+  Ours o;
+  o.moving = moving;
+  o.flips = o.insertion = o.max_min = false;
+  o.method = method;
+  return o;
+}
 
 // What our functions take: the C3T3 of a Mesh_3 output, the mesh itself otherwise.
 template <class M>
@@ -70,7 +87,9 @@ Run smooth_ours(Mesh& mesh, std::size_t iterations, const Ours& how)
           options.moving_vertices = how.moving;
           options.preserve_features = how.preserve_features;
           options.topology_optimization = how.flips;
-          options.vertex_insertion = false;
+          options.vertex_insertion = how.insertion;
+          options.smoothing_method = how.method;
+          if(!how.max_min) options.max_min_threshold = 0;
           const auto r = BODT::smooth(m, options, Iteration_counter{&done});
           flips = r.topology;
           return r.code;
@@ -92,7 +111,9 @@ Run smooth_ours(Mesh& mesh, std::size_t iterations, const Ours& how)
                                             CGAL::parameters::moving_vertices = how.moving,
                                             CGAL::parameters::preserve_features = how.preserve_features,
                                             CGAL::parameters::topology_optimization = how.flips,
-                                            CGAL::parameters::vertex_insertion = false,
+                                            CGAL::parameters::vertex_insertion = how.insertion,
+                                            CGAL::parameters::smoothing_method = how.method,
+                                            CGAL::parameters::max_min_threshold = how.max_min ? BODT::Smoothing_options().max_min_threshold : 0.,
                                             CGAL::parameters::progress_visitor = Counting{&done, &flips});
         }
       },
@@ -148,23 +169,48 @@ const std::vector<Method>& methods()
       {original_name, Family::reference, Applies_to::every_mesh, "the input, unchanged",
        [](Mesh&, std::size_t) { return Run{0, "unchanged"}; }},
       {odt_interior_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `moving_vertices = INTERIOR`, `topology_optimization = false`: the original ODT "
-       "(Algorithm 1), boundary fixed, no flips",
-       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{Moving_vertices::INTERIOR, false, true}); }},
-      {bodt_no_flips_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `topology_optimization = false`: B-ODT smoothing alone (Algorithm 2 on surfaces, "
-       "Algorithm 3 on feature curves, corners fixed), connectivity kept",
-       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{Moving_vertices::ALL, false, true}); }},
+       "`bodt_optimize_mesh_3`, `moving_vertices = INTERIOR`, no flips, no insertion, no max-min: the original "
+       "ODT (Algorithm 1), boundary fixed, connectivity kept",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, smoothing_only(Moving_vertices::INTERIOR)); }},
       {flips_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `moving_vertices = NONE`: topology optimization alone (edge removal, multi-face "
-       "removal, coplanar boundary flips), no vertex moves",
-       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{Moving_vertices::NONE, true, true}); }},
+       "`bodt_optimize_mesh_3`, `moving_vertices = NONE`, no insertion, no max-min: topology optimization alone "
+       "(edge removal, multi-face removal, coplanar boundary flips), no vertex moves",
+       [](Mesh& m, std::size_t n) {
+         Ours o = smoothing_only(Moving_vertices::NONE);
+         o.flips = true;
+         return smooth_ours(m, n, o);
+       }},
+      {nodt_name, Family::ours, Applies_to::every_mesh,
+       "`bodt_optimize_mesh_3`, `smoothing_method = NODT`, no flips, no insertion, no max-min: Natural ODT as "
+       "the paper compares it (boundary vertices at the centroid plus the normal compensation, projected back onto "
+       "the input boundary), connectivity kept",
+       [](Mesh& m, std::size_t n) {
+         return smooth_ours(m, n, smoothing_only(Moving_vertices::ALL, BODT::Smoothing_method::NODT));
+       }},
+      {bodt_no_flips_name, Family::ours, Applies_to::every_mesh,
+       "`bodt_optimize_mesh_3`, no flips, no insertion, no max-min: B-ODT smoothing alone (Algorithm 2 on "
+       "surfaces, Algorithm 3 on feature curves, corners fixed), connectivity kept",
+       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, smoothing_only(Moving_vertices::ALL)); }},
+      {bodt_flips_name, Family::ours, Applies_to::every_mesh,
+       "`bodt_optimize_mesh_3`, `vertex_insertion = false`: B-ODT sweeps, flips and the max-min fallback, no "
+       "vertex added",
+       [](Mesh& m, std::size_t n) {
+         Ours o;
+         o.insertion = false;
+         return smooth_ours(m, n, o);
+       }},
       {bodt_basic_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `preserve_features = false`: Algorithm 2 on every boundary vertex, with flips",
-       [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{Moving_vertices::ALL, true, false}); }},
+       "`bodt_optimize_mesh_3`, `preserve_features = false`: the default pipeline with Algorithm 2 on every "
+       "boundary vertex (feature vertices move like surface vertices)",
+       [](Mesh& m, std::size_t n) {
+         Ours o;
+         o.preserve_features = false;
+         return smooth_ours(m, n, o);
+       }},
       {bodt_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3` with its defaults (vertex insertion off until it exists): each iteration a B-ODT "
-       "sweep, then a flip pass",
+       "`bodt_optimize_mesh_3` with its defaults: each iteration a B-ODT sweep, a flip pass, the max-min "
+       "fallback at the stars still below its threshold, and vertex insertion at spades, caps, slivers and "
+       "wedges (at most 5% vertices added)",
        [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{}); }},
       {after_perturb_exude_name, Family::ours, Applies_to::mesh_3_output,
        "CGAL's `perturb_mesh_3` + `exude_mesh_3` as `make_mesh_3` runs them by default, then "
@@ -227,10 +273,18 @@ std::vector<Input> generated_inputs(bodt_inputs::Size size)
     std::string name = g.name;
     inputs.push_back(Input{name, "Mesh_3 of an implicit function: " + describe(shape), std::move(g)});
   }
+  // CGAL's perturber needs minutes on it (all 642 surface vertices of a random
+  // sphere are in slivers), too long for the quick small run.
+  if(size == bodt_inputs::Size::benchmark)
+    inputs.push_back(Input{"random_sphere",
+                           "the paper's Random Sphere rebuilt: 642 seeded random points on the unit sphere and 87 "
+                           "in the ball of radius 0.8, Delaunay_triangulation_3, then perturb_mesh_3 + exude_mesh_3 "
+                           "on the unit-ball domain",
+                           bodt_inputs::make_paper_random_sphere()});
   bodt_inputs::Delaunay sphere = bodt_inputs::make_random_sphere(size);
   const std::string origin = "Delaunay_triangulation_3 of " + std::to_string(sphere.number_of_vertices()) +
-                             " random points on the unit sphere (the paper's Random Sphere, without inner vertices)";
-  inputs.push_back(Input{"random_sphere", origin, std::move(sphere)});
+                             " random points on the unit sphere, no inner vertex (a Triangulation_3 input)";
+  inputs.push_back(Input{"sphere_points_delaunay", origin, std::move(sphere)});
   return inputs;
 }
 

@@ -89,7 +89,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   using Vertex_handle = typename Labels::Vertex_handle;
   std::size_t budget = opt.max_vertex_insertions >= 0
                            ? static_cast<std::size_t>(opt.max_vertex_insertions)
-                           : static_cast<std::size_t>(std::ceil(0.05 * double(mesh.number_of_vertices())));
+                           : static_cast<std::size_t>(std::floor(0.05 * double(mesh.number_of_vertices())));
   if(!opt.vertex_insertion || opt.moving_vertices == Moving_vertices::NONE) budget = 0;
   Flip_history insertion_history;
   std::vector<Added_vertex<Vertex_handle>> added;

@@ -64,13 +64,30 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
   const std::string& file = src.file;
   auto vline = [&](std::size_t i) { return i < src.vertex_lines.size() ? src.vertex_lines[i] : 0L; };
 
+  // The quality measures and the moves multiply up to six coordinate differences
+  // (volumes times lengths over areas squared): beyond these bounds they overflow
+  // or underflow in double precision, and the angles come out as nonsense.
+  const double largest = 1e30, smallest_extent = 1e-30;
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for(std::size_t i = 0; i < mesh.points.size(); ++i)
   {
     const auto& p = mesh.points[i];
     if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
       throw Mesh_io_error(file, vline(i), "vertex " + std::to_string(i + 1) +
                                               " has a coordinate that is not a finite number");
+    for(int k = 0; k < 3; ++k)
+    {
+      if(std::abs(p[k]) > largest)
+        throw Mesh_io_error(file, vline(i), "vertex " + std::to_string(i + 1) + " has a coordinate of magnitude " +
+                                                "above 1e30, which double-precision geometry cannot handle; "
+                                                "scale the mesh");
+      lo[k] = i == 0 ? p[k] : std::min(lo[k], p[k]);
+      hi[k] = i == 0 ? p[k] : std::max(hi[k], p[k]);
+    }
   }
+  if(!mesh.points.empty() && std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) < smallest_extent)
+    throw Mesh_io_error(file, 0, "the mesh's bounding box is smaller than 1e-30 on every side, which "
+                                 "double-precision geometry cannot handle; scale the mesh");
 
   const int n = static_cast<int>(mesh.points.size());
   if(mesh.tets.empty())
