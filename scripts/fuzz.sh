@@ -3,22 +3,24 @@
 # and runs each one, seeded with small meshes the project writes in every format.
 #
 # usage: scripts/fuzz.sh [seconds-per-harness] [harness...]
-#   scripts/fuzz.sh                    smoke: 8 s per harness, about a minute for all six
+#   scripts/fuzz.sh                    smoke: 8 s per harness, about a minute for all seven
 #   scripts/fuzz.sh 600 gmsh vtu       ten minutes each for two harnesses
 #   FUZZ_RUNS=1000000 scripts/fuzz.sh  a number of executions per harness instead of a time
-# Harnesses: medit meshb gmsh vtu vtk tetgen. Exits non-zero when a harness finds a
-# crash, a leak, undefined behaviour or a failed round trip; the input that did it is
-# kept in build-fuzz/findings/HARNESS/.
+# Harnesses: medit meshb gmsh vtu vtk tetgen (the readers, with round trips) and smooth
+# (three iterations of the default pipeline on small Medit meshes: finite coordinates,
+# no inverted tetrahedron added, volumes kept, at most 5% vertices added). Exits non-zero
+# when a harness finds a crash, a leak, undefined behaviour or a broken promise; the
+# input that did it is kept in build-fuzz/findings/HARNESS/.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 out="$here/build-fuzz"
 seconds=${1:-8}
 [ $# -gt 0 ] && shift
 harnesses=("$@")
-[ ${#harnesses[@]} -eq 0 ] && harnesses=(medit meshb gmsh vtu vtk tetgen)
+[ ${#harnesses[@]} -eq 0 ] && harnesses=(medit meshb gmsh vtu vtk tetgen smooth)
 
 # clang and its libFuzzer/sanitizer runtimes come from Debian.
-packages=(clang libclang-rt-14-dev libcgal-dev libgmp-dev libmpfr-dev zlib1g-dev libboost-dev)
+packages=(clang libclang-rt-14-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev zlib1g-dev libboost-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -33,7 +35,7 @@ fi
 
 cxx=(clang++)
 command -v ccache >/dev/null && cxx=(ccache clang++)
-flags=(-std=c++17 -g -O1 -I"$here/include" -DNDEBUG)
+flags=(-std=c++17 -g -O1 -I"$here/include" -I/usr/include/eigen3 -DNDEBUG)
 libs=(-lgmp -lmpfr -lz)
 mkdir -p "$out"
 
@@ -66,11 +68,14 @@ for h in "${harnesses[@]}"; do
   mkdir -p "$out/corpus/$h" "$out/findings/$h"
   limit=(-max_total_time="$seconds")
   [ -n "${FUZZ_RUNS:-}" ] && limit=(-runs="$FUZZ_RUNS")
+  # The smoothing harness reads Medit files: it starts from the Medit seeds.
+  format=$h
+  [ "$h" = smooth ] && format=medit
   dict=()
-  [ -f "$here/test/fuzz/$h.dict" ] && dict=(-dict="$here/test/fuzz/$h.dict")
+  [ -f "$here/test/fuzz/$format.dict" ] && dict=(-dict="$here/test/fuzz/$format.dict")
   echo "fuzz: $h" >&2
   if ! "$out/fuzz_$h" "${limit[@]}" "${dict[@]}" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
-        -print_final_stats=1 -artifact_prefix="$out/findings/$h/" "$out/corpus/$h" "$out/seeds/$h" \
+        -print_final_stats=1 -artifact_prefix="$out/findings/$h/" "$out/corpus/$h" "$out/seeds/$format" \
         > "$out/$h.log" 2>&1; then
     echo "fuzz: $h FAILED; see $out/$h.log and $out/findings/$h/" >&2
     tail -30 "$out/$h.log" >&2
