@@ -4,12 +4,16 @@
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/mesh_quality.h>
+#include <CGAL/BODT_3/tet_quality.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Random.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -115,6 +119,35 @@ TEST(MeshQuality, CountsVolumeHistogramAndInversion)
                             CGAL::volume(m.points[1], m.points[2], m.points[3], m.points[4]) +
                             CGAL::volume(m.points[0], m.points[2], m.points[1], m.points[5]),
               1e-15);
+}
+
+// A tetrahedron with one vertex 4e10 away (found by fuzzing): computed from that
+// vertex, a determinant's error is ~1e-16 times the product of the three edge lengths
+// (1e15 against a volume of 4e10). Every ordering of the vertices gives the exact
+// volume to 1e-12 with its orientation's sign.
+TEST(MeshQuality, VolumeOfATetrahedronWithAFarVertexIsAccurate)
+{
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  const Point p[4] = {Point(36776269782.557625, -5344627546.645686, -8031025811.945719),
+                      Point(1.868308083149307, 0.5024785025102955, 0.43432769349863964), Point(1, -2, 11.001),
+                      Point(2.033333333133333, 0.99, 1.002)};
+  auto exact = [&](int a, int b, int c, int d) {
+    auto e = [&](int i) { return EK::Point_3(p[i].x(), p[i].y(), p[i].z()); };
+    return CGAL::to_double(CGAL::volume(e(a), e(b), e(c), e(d)));
+  };
+  int order[4] = {0, 1, 2, 3};
+  do
+  {
+    const double want = exact(order[0], order[1], order[2], order[3]);
+    const double got = CGAL::BODT_3::tet_volume(p[order[0]], p[order[1]], p[order[2]], p[order[3]]);
+    EXPECT_NEAR(got, want, 1e-12 * std::abs(want)) << order[0] << order[1] << order[2] << order[3];
+  } while(std::next_permutation(order, order + 4));
+
+  // The quality measure of every decision uses that volume: it must not depend on
+  // which vertex comes first (it did, and flips then chose by a wrong measure).
+  const double sine = CGAL::BODT_3::min_dihedral_sine(p[0], p[1], p[2], p[3]);
+  for(const auto& o : {std::array<int, 4>{1, 0, 3, 2}, std::array<int, 4>{2, 3, 0, 1}, std::array<int, 4>{3, 2, 1, 0}})
+    EXPECT_NEAR(CGAL::BODT_3::min_dihedral_sine(p[o[0]], p[o[1]], p[o[2]], p[o[3]]), sine, 1e-9 * sine);
 }
 
 TEST(MeshQuality, FlatTetrahedronIsCountedAsInverted)

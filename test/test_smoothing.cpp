@@ -5,6 +5,7 @@
 #include "inputs/generated_inputs.h"
 #include "test_support.h"
 
+#include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/boundary_distance.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
@@ -289,6 +290,23 @@ TEST(Nodt, SurfaceVerticesStayOnTheInputBoundary)
   EXPECT_GT(moved, surface_vertices / 2);
   EXPECT_EQ(after.inverted_tets, 0u);
   EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
+}
+
+// Found by the smoothing fuzz harness: a two-subdomain mesh with one vertex 4e10
+// away. The pipeline kept the volume, but the report measured subdomain 2 as 921
+// times larger, because a tetrahedron's volume was computed from its far vertex.
+TEST(Volume, FarVertexMeshFromFuzzingKeepsItsMeasuredVolume)
+{
+  BODT::Tet_mesh m = CGAL::BODT_3::IO::read_mesh(std::string(BODT_FUZZ_FINDINGS) + "/flips_max_min_volume.mesh");
+  const auto before = BODT::mesh_quality(m);
+  BODT::Smoothing_options opt;
+  opt.max_iteration_number = 3;
+  const auto r = BODT::smooth(m, opt);
+  EXPECT_GT(r.topology.total(), 0u) << "no flip: the test lost its point";
+  const auto after = BODT::mesh_quality(m);
+  EXPECT_EQ(after.inverted_tets, 0u);
+  for(const auto& [label, volume] : before.volume_per_subdomain)
+    EXPECT_NEAR(after.volume_per_subdomain.at(label), volume, 1e-10 * volume) << "subdomain " << label;
 }
 
 TEST(Nodt, AFlatFaceStaysFlat)

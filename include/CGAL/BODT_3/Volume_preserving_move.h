@@ -9,6 +9,7 @@
 #include <CGAL/BODT_3/Vertex_classification.h>
 #include <CGAL/BODT_3/Vertex_star.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -100,28 +101,43 @@ private:
   // Orthonormal basis of span{n_j}, the (B.1) normals of the subdomains of the
   // star. A normal that vanishes (a part surrounding x0) or repeats another up to
   // round-off (two sides of an interface) adds no direction: residuals below 1e-9
-  // of the star's total face area are dropped. -1 for eight subdomains or more.
+  // of that subdomain's face area are dropped. The normals are taken in order of
+  // that area, smallest first: on an interface the two sides give the same
+  // direction, and the side with the smaller faces gives it with the smaller
+  // rounding error (a side with faces of 1e10 beside faces of 1 loses the small
+  // side's digits). Ties are broken by label. -1 for eight subdomains or more.
   template <class K>
   static int normal_basis(const Vertex_star<K>& star, typename K::Vector_3 basis[3])
   {
     using Vector = typename K::Vector_3;
-    double area_scale = 0;
-    for(const auto& cell : star.cells)
-      area_scale += 0.5 * std::sqrt(CGAL::cross_product(cell.b - cell.a, cell.c - cell.a).squared_length());
-    int rank = 0;
-    int seen[8];
-    int nseen = 0;
+    struct Part
+    {
+      int subdomain;
+      double area;
+    };
+    Part parts[8];
+    int nparts = 0;
     for(const auto& cell : star.cells)
     {
-      bool known = false;
-      for(int i = 0; i < nseen; ++i) known = known || seen[i] == cell.subdomain;
-      if(known) continue;
-      if(nseen == 8) return -1;   // eight subdomains at one point: leave it
-      seen[nseen++] = cell.subdomain;
-      Vector n = star.subdomain_normal(cell.subdomain);
+      int i = 0;
+      while(i < nparts && parts[i].subdomain != cell.subdomain) ++i;
+      if(i == nparts)
+      {
+        if(nparts == 8) return -1;   // eight subdomains at one point: leave it
+        parts[nparts++] = Part{cell.subdomain, 0.0};
+      }
+      parts[i].area += 0.5 * std::sqrt(CGAL::cross_product(cell.b - cell.a, cell.c - cell.a).squared_length());
+    }
+    std::sort(parts, parts + nparts, [](const Part& x, const Part& y) {
+      return x.area < y.area || (x.area == y.area && x.subdomain < y.subdomain);
+    });
+    int rank = 0;
+    for(int k = 0; k < nparts; ++k)
+    {
+      Vector n = star.subdomain_normal(parts[k].subdomain);
       for(int i = 0; i < rank; ++i) n = n - (n * basis[i]) * basis[i];
       const double res = std::sqrt(n.squared_length());
-      if(res > 1e-9 * area_scale && rank < 3) basis[rank++] = n / res;
+      if(res > 1e-9 * parts[k].area && rank < 3) basis[rank++] = n / res;
     }
     return rank;
   }

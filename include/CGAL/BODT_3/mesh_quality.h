@@ -5,6 +5,7 @@
 
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/dihedral_angles.h>
+#include <CGAL/BODT_3/tet_quality.h>
 
 #include <CGAL/Kernel/global_functions.h>
 
@@ -99,7 +100,7 @@ public:
     const double rr = radius_ratio(p0, p1, p2, p3);
     r_.min_radius_ratio = std::min(r_.min_radius_ratio, rr);
     rr_sum_ += rr;
-    const double v = CGAL::volume(p0, p1, p2, p3);
+    const double v = tet_volume(p0, p1, p2, p3);
     r_.volume += v;
     r_.volume_per_subdomain[subdomain] += v;
     if(CGAL::orientation(p0, p1, p2, p3) != CGAL::POSITIVE) ++r_.inverted_tets;

@@ -14,6 +14,55 @@
 namespace CGAL {
 namespace BODT_3 {
 
+namespace internal {
+
+// The even permutations of a tetrahedron's vertices, one per first vertex.
+constexpr int even_orders[4][4] = {{0, 1, 2, 3}, {1, 0, 3, 2}, {2, 3, 0, 1}, {3, 2, 1, 0}};
+
+// The even permutation whose first vertex has the three edges with the smallest
+// product of lengths. Determinants and cross products computed from that vertex
+// have the smallest rounding error (about 1e-16 times that product): a tetrahedron
+// with one vertex 1e10 away from the three others loses every digit when the far
+// vertex is the base.
+template <class Point>
+int best_base(const Point* const p[4])
+{
+  auto d2 = [&](int i, int j) {
+    const double x = p[i]->x() - p[j]->x(), y = p[i]->y() - p[j]->y(), z = p[i]->z() - p[j]->z();
+    return x * x + y * y + z * z;
+  };
+  int best = 0;
+  double best_product = std::numeric_limits<double>::infinity();
+  for(int k = 0; k < 4; ++k)
+  {
+    const int* o = even_orders[k];
+    const double product = d2(o[0], o[1]) * d2(o[0], o[2]) * d2(o[0], o[3]);
+    if(product < best_product)
+    {
+      best_product = product;
+      best = k;
+    }
+  }
+  return best;
+}
+
+} // namespace internal
+
+/// The signed volume of the tetrahedron, computed from its best-conditioned vertex
+/// (`internal::best_base`), so that a tetrahedron with a far vertex keeps its
+/// volume to round-off. The sign is the orientation's.
+template <class Point>
+double tet_volume(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  const Point* p[4] = {&p0, &p1, &p2, &p3};
+  const int* o = internal::even_orders[internal::best_base(p)];
+  const Point &a = *p[o[0]], &b = *p[o[1]], &c = *p[o[2]], &d = *p[o[3]];
+  const double ax = b.x() - a.x(), ay = b.y() - a.y(), az = b.z() - a.z();
+  const double bx = c.x() - a.x(), by = c.y() - a.y(), bz = c.z() - a.z();
+  const double cx = d.x() - a.x(), cy = d.y() - a.y(), cz = d.z() - a.z();
+  return (ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx)) / 6;
+}
+
 /// The quality measure that decides everything that changes the mesh (the
 /// smoothing guard, flips, insertion and its undo): the minimum sine of the six
 /// dihedral angles of a tetrahedron. It is 0 for a flat tetrahedron, sqrt(8)/3
@@ -28,8 +77,13 @@ namespace BODT_3 {
 /// so the measure needs one square root. Returns -1 when the tetrahedron is not
 /// positively oriented in floating point (callers decide orientation exactly).
 template <class Point>
-double min_dihedral_sine(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+double min_dihedral_sine(const Point& q0, const Point& q1, const Point& q2, const Point& q3)
 {
+  // The measure is invariant under even permutations: compute it from the
+  // best-conditioned vertex.
+  const Point* q[4] = {&q0, &q1, &q2, &q3};
+  const int* o = internal::even_orders[internal::best_base(q)];
+  const Point &p0 = *q[o[0]], &p1 = *q[o[1]], &p2 = *q[o[2]], &p3 = *q[o[3]];
   const double ax = p1.x() - p0.x(), ay = p1.y() - p0.y(), az = p1.z() - p0.z();
   const double bx = p2.x() - p0.x(), by = p2.y() - p0.y(), bz = p2.z() - p0.z();
   const double cx = p3.x() - p0.x(), cy = p3.y() - p0.y(), cz = p3.z() - p0.z();
