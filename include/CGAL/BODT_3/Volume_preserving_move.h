@@ -9,8 +9,8 @@
 #include <CGAL/BODT_3/Vertex_classification.h>
 #include <CGAL/BODT_3/Vertex_star.h>
 
-#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -128,9 +128,14 @@ private:
       }
       parts[i].area += 0.5 * std::sqrt(CGAL::cross_product(cell.b - cell.a, cell.c - cell.a).squared_length());
     }
-    std::sort(parts, parts + nparts, [](const Part& x, const Part& y) {
-      return x.area < y.area || (x.area == y.area && x.subdomain < y.subdomain);
-    });
+    // At most eight parts: an insertion sort.
+    for(int i = 1; i < nparts; ++i)
+      for(int j = i; j > 0; --j)
+      {
+        const Part &x = parts[j], &y = parts[j - 1];
+        if(!(x.area < y.area || (x.area == y.area && x.subdomain < y.subdomain))) break;
+        std::swap(parts[j], parts[j - 1]);
+      }
     int rank = 0;
     for(int k = 0; k < nparts; ++k)
     {
