@@ -2,6 +2,7 @@
 // and facet splits with their labels (subdomains, patches, curves, vertex
 // dimensions), volume and validity, and their undo; the budget; and the pipeline
 // with insertion over CGAL-meshed inputs and through a file mesh.
+#include "c3t3_checks.h"
 #include "inputs/generated_inputs.h"
 
 #include <CGAL/BODT_3/Bad_tet_shape.h>
@@ -25,6 +26,9 @@ using File_c3t3 = BODT::Tet_mesh_c3t3;
 using Vertex_handle = File_c3t3::Vertex_handle;
 using Labels = BODT::C3t3_labels<File_c3t3>;
 
+using bodt_test::bare;
+using bodt_test::expect_valid;
+
 namespace {
 
 Bad_tet_shape shape_of(Point a, Point b, Point c, Point d)
@@ -47,11 +51,6 @@ Tet_mesh make_mesh(const std::vector<Point>& points, std::vector<std::array<int,
   m.tets = tets;
   m.tet_labels = labels.empty() ? std::vector<int>(tets.size(), 1) : labels;
   return m;
-}
-
-Point bare(const File_c3t3& c3t3, Vertex_handle v)
-{
-  return c3t3.triangulation().geom_traits().construct_point_3_object()(v->point());
 }
 
 // What a split and its undo must keep or restore.
@@ -80,30 +79,6 @@ State state(const File_c3t3& c3t3)
   s.facets = c3t3.number_of_facets_in_complex();
   for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) ++s.edges;
   return s;
-}
-
-void expect_valid(const File_c3t3& c3t3)
-{
-  const auto& tr = c3t3.triangulation();
-  EXPECT_TRUE(tr.tds().is_valid());
-  std::size_t bad = 0, in_complex = 0, facets = 0;
-  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
-  {
-    if(CGAL::orientation(bare(c3t3, c->vertex(0)), bare(c3t3, c->vertex(1)), bare(c3t3, c->vertex(2)),
-                         bare(c3t3, c->vertex(3))) != CGAL::POSITIVE)
-      ++bad;
-    if(c3t3.is_in_complex(c)) ++in_complex;
-  }
-  for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(c3t3.is_in_complex(c, i))
-      {
-        ++facets;
-        EXPECT_EQ(c3t3.surface_patch_index(c, i), c3t3.surface_patch_index(c->neighbor(i), c->neighbor(i)->index(c)));
-      }
-  EXPECT_EQ(bad, 0u);
-  EXPECT_EQ(in_complex, c3t3.number_of_cells_in_complex());
-  EXPECT_EQ(facets, 2 * c3t3.number_of_facets_in_complex());
 }
 
 void expect_same_volumes(const State& a, const State& b)

@@ -3,6 +3,7 @@
 // better configuration chosen, exact coplanarity refused when off by one ulp,
 // curve edges and interfaces kept), and a property test of the whole pipeline over
 // CGAL-meshed inputs with features and two subdomains.
+#include "c3t3_checks.h"
 #include "inputs/generated_inputs.h"
 
 #include <CGAL/BODT_3/IO/c3t3_conversion.h>
@@ -25,6 +26,9 @@ using BODT::Tet_mesh;
 using Point = Tet_mesh::Point;
 using File_c3t3 = BODT::Tet_mesh_c3t3;
 using Vertex_handle = File_c3t3::Vertex_handle;
+
+using bodt_test::bare;
+using bodt_test::expect_valid;
 
 namespace {
 
@@ -83,11 +87,6 @@ BODT::Topology_stats flip_all(File_c3t3& c3t3)
                          touched);
 }
 
-Point bare(const File_c3t3& c3t3, Vertex_handle v)
-{
-  return c3t3.triangulation().geom_traits().construct_point_3_object()(v->point());
-}
-
 // What flips must keep, and the quality they must raise.
 struct Snapshot
 {
@@ -126,34 +125,6 @@ Snapshot snapshot(const File_c3t3& c3t3)
     s.facets.insert({sorted_points(p[0], p[1], p[2]), patch});
   }
   return s;
-}
-
-// The triangulation is combinatorially valid, every finite cell is positively
-// oriented (exact predicate), and the complex's counters match its content.
-void expect_valid(const File_c3t3& c3t3)
-{
-  const auto& tr = c3t3.triangulation();
-  EXPECT_TRUE(tr.tds().is_valid());
-  std::size_t bad = 0, in_complex = 0, facets = 0;
-  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
-  {
-    if(CGAL::orientation(bare(c3t3, c->vertex(0)), bare(c3t3, c->vertex(1)), bare(c3t3, c->vertex(2)),
-                         bare(c3t3, c->vertex(3))) != CGAL::POSITIVE)
-      ++bad;
-    if(c3t3.is_in_complex(c)) ++in_complex;
-  }
-  for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
-    for(int i = 0; i < 4; ++i)
-      if(c3t3.is_in_complex(c, i))
-      {
-        ++facets;
-        EXPECT_TRUE(c3t3.is_in_complex(c->neighbor(i), c->neighbor(i)->index(c)));
-        EXPECT_EQ(c3t3.surface_patch_index(c, i),
-                  c3t3.surface_patch_index(c->neighbor(i), c->neighbor(i)->index(c)));
-      }
-  EXPECT_EQ(bad, 0u);
-  EXPECT_EQ(in_complex, c3t3.number_of_cells_in_complex());
-  EXPECT_EQ(facets, 2 * c3t3.number_of_facets_in_complex());
 }
 
 void expect_kept(const Snapshot& before, const Snapshot& after, bool same_facets = true)
