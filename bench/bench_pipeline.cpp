@@ -15,7 +15,7 @@
 // boundary.
 //
 //   bench_pipeline [--small] [--iterations N] [--flip-threshold Q] [--flip-outside] [--worst N]
-//                  [mesh or .off files...]
+//                  [--only GENERATED_INPUT] [mesh or .off files...]
 #include "compare/compare.h"
 #include "inputs/generated_inputs.h"
 
@@ -174,6 +174,7 @@ int main(int argc, char** argv)
   Size size = Size::benchmark;
   std::size_t iterations = 20;
   std::vector<std::string> files;
+  std::string only;   // one generated input by name
   for(int i = 1; i < argc; ++i)
   {
     if(!std::strcmp(argv[i], "--small")) size = Size::small;
@@ -181,11 +182,13 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--flip-threshold") && i + 1 < argc) flip_options.quality_threshold = std::stod(argv[++i]);
     else if(!std::strcmp(argv[i], "--flip-outside")) flip_options.flip_outside = true;
     else if(!std::strcmp(argv[i], "--worst") && i + 1 < argc) worst_listed = std::stoul(argv[++i]);
+    else if(!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
     else files.push_back(argv[i]);
   }
   header();
   if(files.empty())
-    for(Shape shape : all_shapes()) run(name(shape), make_input(shape, size).c3t3, iterations);
+    for(Shape shape : all_shapes())
+      if(only.empty() || only == name(shape)) run(name(shape), make_input(shape, size).c3t3, iterations);
   for(const auto& f : files)
   {
     const std::string label = f.substr(f.find_last_of('/') + 1);

@@ -398,7 +398,7 @@ TEST(Insertion_budget, CapsTheVerticesAdded)
     }
     else
       EXPECT_LE(r.insertion.vertices_added, static_cast<std::size_t>(budget));
-    if(budget == 0) EXPECT_EQ(r.insertion.vertices_added, 0u);
+    if(budget == 0) { EXPECT_EQ(r.insertion.vertices_added, 0u); }
   }
   EXPECT_GT(unlimited, 3u) << "the small genus-2 mesh needs insertions; the test loses its point otherwise";
 }

@@ -1,6 +1,7 @@
 // Quality measures: dihedral angles against CGAL's independent
 // approximate_dihedral_angle, counts, volumes, exact inversion test, and the
 // real meshes of ../shared/data when present.
+#include <CGAL/BODT_3/Handle_index_map.h>
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -232,4 +233,21 @@ TEST(MeshQuality, RealMeshesAgreeWithIndependentComputation)
     ++checked;
   }
   EXPECT_GE(checked, 1);
+}
+
+// The flat view's handle index: every inserted handle found with its index, the
+// others not, duplicates refused, through several rehashes.
+TEST(Handle_index_map, FindsWhatWasInsertedThroughGrowth)
+{
+  std::vector<int> storage(5000), others(100);
+  CGAL::BODT_3::Handle_index_map<int*> map;
+  map.reset(0);
+  for(std::size_t i = 0; i < storage.size(); ++i) EXPECT_TRUE(map.insert(&storage[i], static_cast<int>(i)));
+  EXPECT_FALSE(map.insert(&storage[7], 99));
+  EXPECT_EQ(map.size(), storage.size());
+  for(std::size_t i = 0; i < storage.size(); ++i) ASSERT_EQ(map.find(&storage[i]), static_cast<int>(i));
+  for(int& x : others) EXPECT_EQ(map.find(&x), -1);
+  map.reset(10);
+  EXPECT_EQ(map.find(&storage[0]), -1);
+  EXPECT_EQ(map.size(), 0u);
 }

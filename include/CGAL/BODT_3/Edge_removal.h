@@ -20,13 +20,17 @@ namespace internal {
 // optimization algorithms for the topological improvement of tetrahedral meshes"):
 // each triangle (w_a, w_b, w_c), a < b < c, gives the cells (w_a, w_b, w_c, v) and
 // (w_c, w_b, w_a, u), and the triangulation maximizing the worst of its cells wins.
-template <class Value>
 class Polygon_triangulation
 {
 public:
-  // `value(a, b, c)` is the worse of the two cells of triangle (a, b, c).
-  Polygon_triangulation(int n, const Value& value) : n_(n), best_(n * n, 0), split_(n * n, -1)
+  // `value(a, b, c)` is the worse of the two cells of triangle (a, b, c). The
+  // tables are kept from one call to the next (edge removal is tried often).
+  template <class Value>
+  void solve(int n, const Value& value)
   {
+    n_ = n;
+    best_.assign(n * n, 0);
+    split_.assign(n * n, -1);
     for(int a = 0; a + 1 < n; ++a) best_[a * n + a + 1] = std::numeric_limits<double>::infinity();
     for(int len = 2; len < n; ++len)
       for(int a = 0; a + len < n; ++a)
@@ -36,7 +40,11 @@ public:
         int arg = -1;
         for(int b = a + 1; b < c; ++b)
         {
-          const double q = std::min({best_[a * n + b], best_[b * n + c], value(a, b, c)});
+          // The triangle cannot raise the result above its two sub-polygons':
+          // skip its (costly) cells when they already lose.
+          const double sub = std::min(best_[a * n + b], best_[b * n + c]);
+          if(sub <= best) continue;
+          const double q = std::min(sub, value(a, b, c));
           if(q > best)
           {
             best = q;
@@ -63,7 +71,7 @@ private:
     collect(b, c, out);
   }
 
-  int n_;
+  int n_ = 0;
   std::vector<double> best_;
   std::vector<int> split_;
 };
@@ -93,9 +101,22 @@ struct Edge_removal
 
   int max_ring = 10;   // larger rings are left alone: they rarely help and cost O(m^3)
 
+private:
+  // Scratch space kept between calls.
+  mutable std::vector<Vertex_handle> ring_;
+  mutable std::vector<int> constrained_;
+  mutable std::vector<std::array<int, 3>> triangles_;
+  mutable internal::Polygon_triangulation polygon_;
+
+public:
+
   /// Proposes the removal of edge (c, i, j) in `out`; returns false if it is not
   /// allowed or no triangulation is valid. `out.improves()` tells whether to apply it.
-  bool operator()(const Flip_context<Labels>& ctx, Cell_handle c, int i, int j, Flip<Labels>& out) const
+  /// With `at_least`, only a proposal whose worst cell is better than that counts
+  /// (a caller comparing alternatives passes its best so far): the search skips
+  /// what cannot beat it, and returns false when nothing does.
+  bool operator()(const Flip_context<Labels>& ctx, Cell_handle c, int i, int j, Flip<Labels>& out,
+                  double at_least = -std::numeric_limits<double>::infinity()) const
   {
     out.clear();
     Vertex_handle u = c->vertex(i), v = c->vertex(j);
@@ -112,7 +133,8 @@ struct Edge_removal
     if(m < 3) return false;
 
     // ring[k] is shared by cells k-1 and k, so cell k is {u, v, ring[k], ring[k+1]}.
-    std::vector<Vertex_handle> ring(m);
+    std::vector<Vertex_handle>& ring = ring_;
+    ring.assign(m, Vertex_handle());
     for(int k = 0; k < m; ++k)
     {
       const Cell_handle prev = cells[(k + m - 1) % m];
@@ -125,7 +147,8 @@ struct Edge_removal
     if(!Flip_context<Labels>::same_orientation(cells[0], u, v, ring[0], ring[1])) std::swap(u, v);
 
     // Constrained facets (u, v, ring[k]) between cells k-1 and k.
-    std::vector<int> constrained;
+    std::vector<int>& constrained = constrained_;
+    constrained.clear();
     for(int k = 0; k < m; ++k)
     {
       const Cell_handle prev = cells[(k + m - 1) % m];
@@ -139,14 +162,15 @@ struct Edge_removal
     {
       int first, last;
     };
-    std::vector<Side> sides;
+    Side sides[2];
+    int num_sides = 0;
     Region_kind measured = Region_kind::mesh;
     if(constrained.empty())
     {
       const auto r = ctx.labels.region(cells[0]);
       if(!ctx.flippable(r)) return false;
       measured = r.kind;
-      sides.push_back({0, m - 1});
+      sides[num_sides++] = {0, m - 1};
     }
     else if(constrained.size() == 2)
     {
@@ -162,7 +186,7 @@ struct Edge_removal
         const auto r = ctx.labels.region(cells[s.first % m]);
         if(s.last - s.first < 2 || (r.kind == Region_kind::infinite && s.last - s.first != 2)) return false;
         any_mesh = any_mesh || r.kind == Region_kind::mesh;
-        sides.push_back(s);
+        sides[num_sides++] = s;
       }
       if(!any_mesh) return false;
       out.boundary = true;
@@ -176,21 +200,25 @@ struct Edge_removal
     for(const Cell_handle& x : cells)
       if(ctx.labels.region(x).kind == measured) out.old_worst = std::min(out.old_worst, ctx.quality(x));
 
+    const double floor = std::max(out.old_worst, at_least);
     out.new_worst = Flip_context<Labels>::unmeasured;
-    std::vector<std::array<int, 3>> triangles;
-    for(const Side& s : sides)
+    std::vector<std::array<int, 3>>& triangles = triangles_;
+    for(int k = 0; k < num_sides; ++k)
     {
+      const Side& s = sides[k];
       const int n = s.last - s.first + 1;
       const int region_of = s.first % m;
       const Region_kind kind = ctx.labels.region(cells[region_of]).kind;
       auto w = [&](int a) { return ring[(s.first + a) % m]; };
-      // A triangle no better than the cells removed cannot be part of an improvement.
+      // A triangle no better than the cells removed (or than `at_least`) cannot be
+      // part of a proposal that counts.
       auto value = [&](int a, int b, int c) {
-        const double top = ctx.value({w(a), w(b), w(c), v}, kind, measured, out.old_worst);
+        const double top = ctx.value({w(a), w(b), w(c), v}, kind, measured, floor);
         if(top == Flip_context<Labels>::invalid) return top;
-        return std::min(top, ctx.value({w(c), w(b), w(a), u}, kind, measured, out.old_worst));
+        return std::min(top, ctx.value({w(c), w(b), w(a), u}, kind, measured, floor));
       };
-      const internal::Polygon_triangulation<decltype(value)> best(n, value);
+      internal::Polygon_triangulation& best = polygon_;
+      best.solve(n, value);
       out.new_worst = std::min(out.new_worst, best.worst());
       if(out.new_worst <= 0) return false;
       triangles.clear();

@@ -52,7 +52,7 @@ public:
     for(int v : changed) dirty_[v] = 1;
     derive();
     for(int v : changed)
-      for(int u : dependents_[v]) dirty_[u] = 1;
+      mark_dependents(v);
     guard_.refresh();
   }
 
@@ -95,7 +95,7 @@ public:
       moved_once_[v] = 1;
       moved_.push_back(v);
       dirty_[v] = 1;
-      for(int u : dependents_[v]) dirty_[u] = 1;
+      mark_dependents(v);
       double volume = 0;
       for(const auto& c : star.cells) volume += CGAL::determinant(c.a - star.x0, c.b - star.x0, c.c - star.x0);
       const double size = std::cbrt(volume / 6.0 / static_cast<double>(star.cells.size()));
@@ -168,9 +168,12 @@ public:
       moved_.push_back(v);
       moved_once_[v] = 1;
       dirty_[v] = 1;
-      for(int u : dependents_[v]) dirty_[u] = 1;
+      mark_dependents(v);
     }
   }
+
+  /// The quality of cell `c` now (kept up to date by the quality guard; meaningless without it).
+  double cell_quality(int c) const { return guard_.cell_quality(c); }
 
   /// The vertices moved since the last `forget_moves`.
   const std::vector<int>& moved() const { return moved_; }
@@ -189,22 +192,42 @@ private:
   // vertices are skipped, which changes no result.
   void derive()
   {
-    std::vector<char> movable(mesh_.number_of_vertices());
-    for(std::size_t v = 0; v < movable.size(); ++v) movable[v] = cls_.kind[v] != Vertex_kind::fixed;
+    const int nv = static_cast<int>(mesh_.number_of_vertices());
+    std::vector<char> movable(nv);
+    for(int v = 0; v < nv; ++v) movable[v] = cls_.kind[v] != Vertex_kind::fixed;
     order_ = sweep_order(mesh_, movable);
-    dependents_.assign(mesh_.number_of_vertices(), {});
+    // The vertices to revisit when u moves: the movable vertices sharing a cell
+    // with u, and those with a hull check whose far vertex is u. Flat (one array
+    // for all): re-derived after every pass that changes the connectivity.
+    std::vector<int> far_begin(nv + 1, 0), far;   // per far vertex, the vertices checking it
     for(int v : order_.vertices)
+      for(int k = mesh_.hull_begin[v]; k < mesh_.hull_begin[v + 1]; ++k) ++far_begin[mesh_.vertex_hull_checks[k][3] + 1];
+    for(int u = 0; u < nv; ++u) far_begin[u + 1] += far_begin[u];
+    far.resize(far_begin[nv]);
+    std::vector<int> fill(far_begin.begin(), far_begin.end() - 1);
+    for(int v : order_.vertices)
+      for(int k = mesh_.hull_begin[v]; k < mesh_.hull_begin[v + 1]; ++k) far[fill[mesh_.vertex_hull_checks[k][3]]++] = v;
+    std::vector<int> stamp(nv, -1);
+    dependent_begin_.assign(nv + 1, 0);
+    dependents_.clear();
+    for(int u = 0; u < nv; ++u)
     {
-      for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
-        for(int u : mesh_.incidences[k].face) dependents_[u].push_back(v);
-      for(int k = mesh_.hull_begin[v]; k < mesh_.hull_begin[v + 1]; ++k)
-        dependents_[mesh_.vertex_hull_checks[k][3]].push_back(v);
+      dependent_begin_[u] = static_cast<int>(dependents_.size());
+      auto add = [&](int w) {
+        if(w == u || !movable[w] || stamp[w] == u) return;
+        stamp[w] = u;
+        dependents_.push_back(w);
+      };
+      for(int k = mesh_.incidence_begin[u]; k < mesh_.incidence_begin[u + 1]; ++k)
+        for(int w : mesh_.incidences[k].face) add(w);
+      for(int k = far_begin[u]; k < far_begin[u + 1]; ++k) add(far[k]);
     }
-    for(auto& d : dependents_)
-    {
-      std::sort(d.begin(), d.end());
-      d.erase(std::unique(d.begin(), d.end()), d.end());
-    }
+    dependent_begin_[nv] = static_cast<int>(dependents_.size());
+  }
+
+  void mark_dependents(int v)
+  {
+    for(int k = dependent_begin_[v]; k < dependent_begin_[v + 1]; ++k) dirty_[dependents_[k]] = 1;
   }
 
   Smoothing_mesh<K>& mesh_;
@@ -214,7 +237,8 @@ private:
   Volume_preserving_move mover_;
   std::unique_ptr<Boundary_projection<K>> projection_;   // NODT: the input's boundary
   Sweep_order order_;
-  std::vector<std::vector<int>> dependents_;
+  std::vector<int> dependent_begin_;   // per vertex, into dependents_
+  std::vector<int> dependents_;
   std::vector<char> dirty_;
   std::vector<char> moved_once_;
   std::vector<int> moved_;

@@ -3,6 +3,7 @@
 #ifndef CGAL_BODT_3_TRIANGULATION_VIEW_H
 #define CGAL_BODT_3_TRIANGULATION_VIEW_H
 
+#include <CGAL/BODT_3/Handle_index_map.h>
 #include <CGAL/BODT_3/Mesh_labels.h>
 #include <CGAL/BODT_3/bare_point.h>
 #include <CGAL/BODT_3/Smoothing_mesh.h>
@@ -14,7 +15,6 @@
 #include <map>
 #include <stdexcept>
 #include <type_traits>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -50,7 +50,12 @@ public:
   const Mesh& mesh() const { return mesh_; }
   const std::vector<Cell_handle>& cells() const { return cells_; }
   const std::vector<Vertex_handle>& vertices() const { return handles_; }
-  int index(Vertex_handle v) const { return index_.at(v); }
+  int index(Vertex_handle v) const
+  {
+    const int i = index_.find(v);
+    if(i < 0) throw std::out_of_range("vertex not in the view");
+    return i;
+  }
 
   /// Re-reads the cells (and any new vertex) of the triangulation, with their
   /// regions, the hull checks and the incidences.
@@ -59,7 +64,7 @@ public:
     Tr& tr = labels_.triangulation();
     auto cp = tr.geom_traits().construct_point_3_object();
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-      if(index_.emplace(v, static_cast<int>(handles_.size())).second)
+      if(index_.insert(v, static_cast<int>(handles_.size())))
       {
         handles_.push_back(v);
         mesh_.points.push_back(cp(v->point()));
@@ -68,10 +73,10 @@ public:
     mesh_.cells.clear();
     mesh_.in_mesh.clear();
     mesh_.subdomain.clear();
-    cell_index_.clear();
+    cell_index_.reset(tr.tds().number_of_cells());
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
     {
-      cell_index_.emplace(c, static_cast<int>(cells_.size()));
+      cell_index_.insert(c, static_cast<int>(cells_.size()));
       cells_.push_back(c);
       mesh_.cells.push_back({index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))});
       const auto r = labels_.region(c);
@@ -82,10 +87,7 @@ public:
     mesh_.neighbor.assign(4 * cells_.size(), -1);
     for(std::size_t c = 0; c < cells_.size(); ++c)
       for(int i = 0; i < 4; ++i)
-      {
-        const auto it = cell_index_.find(cells_[c]->neighbor(i));
-        if(it != cell_index_.end()) mesh_.neighbor[4 * c + i] = it->second;
-      }
+        mesh_.neighbor[4 * c + i] = cell_index_.find(cells_[c]->neighbor(i));
     mesh_.hull_checks.clear();
     if(labels_.convex_hull()) add_hull_checks();
     mesh_.build_incidences();
@@ -139,8 +141,8 @@ private:
   Mesh mesh_;
   std::vector<Vertex_handle> handles_;
   std::vector<Cell_handle> cells_;
-  std::unordered_map<Vertex_handle, int> index_;
-  std::unordered_map<Cell_handle, int> cell_index_;
+  Handle_index_map<Vertex_handle> index_;
+  Handle_index_map<Cell_handle> cell_index_;
 };
 
 /// What a `Mesh_complex_3_in_triangulation_3` knows of its features: vertex

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
 #include <queue>
 #include <unordered_map>
 #include <vector>
@@ -27,8 +28,11 @@ namespace BODT_3 {
 /// advances at each sweep and the pass at each flip. A cell tried in vain is tried
 /// again only once its neighbourhood changed (its flips depend on nothing else,
 /// except for multi-face removals reaching further), and, after k failures in a
-/// row, only every 2^(k-1) passes (at most 8): smoothing keeps moving the vertices
+/// row, only every 4^(k-1) passes (at most 16): smoothing keeps moving the vertices
 /// of a bad region a little, and such cells would otherwise be retried every pass.
+/// (Measured on the bench inputs, doc/stages.md: waits of 1, 2, 4, 8 gave the same
+/// angles to 0.01 degree as 1, 4, 16 at a third more flip time; the second retry
+/// and later ones fix almost nothing.)
 struct Flip_history
 {
   struct Hash
@@ -56,7 +60,7 @@ struct Flip_history
     const auto it = failed.find(ids);
     if(it == failed.end()) return true;
     const Failure& f = it->second;
-    const std::size_t wait = std::size_t(1) << std::min<std::size_t>(f.count - 1, 3);
+    const std::size_t wait = std::size_t(1) << std::min<std::size_t>(2 * (f.count - 1), 4);
     if(pass < f.pass + wait) return false;
     for(int v : ids)
       if(v < static_cast<int>(region_stamp.size()) && region_stamp[v] > f.clock) return true;
@@ -81,12 +85,16 @@ struct Flip_history
 ///
 /// `touched` receives the vertices of every cell created (with repetitions).
 /// `history` (optional) lets the pass skip cells tried in vain before whose
-/// neighbourhood has not changed since.
+/// neighbourhood has not changed since. `candidates` (optional) are the cells to
+/// start from, a superset of the flippable cells below the threshold (the caller
+/// may know them without measuring every cell); by default every finite cell is
+/// measured. The result does not depend on which superset is given.
 template <class Labels, class Vertex_id>
 Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral_bounds& bounds,
                          const Vertex_id& vertex_id, std::vector<typename Labels::Vertex_handle>& touched,
                          Flip_history* history = nullptr,
-                         Quality_measure measure = Quality_measure::min_dihedral_sine)
+                         Quality_measure measure = Quality_measure::min_dihedral_sine,
+                         const std::vector<typename Labels::Cell_handle>* candidates = nullptr)
 {
   using Vertex_handle = typename Labels::Vertex_handle;
   using Cell_handle = typename Labels::Cell_handle;
@@ -126,8 +134,11 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
     queue.push(e);
   };
   auto& tr = labels.triangulation();
-  std::size_t cells = 0;
-  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c, ++cells) push(c);
+  const std::size_t cells = labels.tds().number_of_cells();   // O(1), unlike counting the finite ones
+  if(candidates)
+    for(Cell_handle c : *candidates) push(c);
+  else
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) push(c);
 
   // Within the pass, geometry is fixed: an edge removal or a face removal found
   // useless stays so until a flip touches its vertices.
@@ -168,9 +179,12 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
         const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b));
         const auto known = useless_edges.find(key);
         if(known != useless_edges.end() && still_useless(known->second, {c->vertex(i), c->vertex(j)})) continue;
-        if(edge_removal(ctx, c, i, j, candidate) && candidate.improves())
+        // Only the best proposal for this cell counts: what cannot beat the best so
+        // far is cut short, and then says nothing about the edge's own worth.
+        const double at_least = best.improves() ? best.new_worst : -std::numeric_limits<double>::infinity();
+        if(edge_removal(ctx, c, i, j, candidate, at_least) && candidate.improves())
           consider();
-        else
+        else if(!best.improves() || candidate.old_worst >= at_least)
           useless_edges[key] = flips_done;
       }
     for(int i = 0; i < 4; ++i)

@@ -83,6 +83,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   std::vector<typename Labels::Vertex_handle> touched;
   std::vector<int> changed;
   Flip_history history;
+  std::vector<typename Labels::Cell_handle> candidates;
   std::vector<std::size_t> changed_at(mesh.number_of_vertices(), 0);   // per vertex: when it last moved or flipped
 
   // Insertion: its budget, and how existing vertices move, by their view id.
@@ -155,7 +156,16 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       stamp_regions(history);
       touched.clear();
       added.clear();
-      stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure);
+      // The guard already knows every mesh cell's quality: start from the bad ones.
+      const bool known = opt.quality_guard && opt.quality_measure == Quality_measure::min_dihedral_sine &&
+                         !opt.flips.flip_outside;
+      candidates.clear();
+      if(known)
+        for(std::size_t c = 0; c < mesh.cells.size(); ++c)
+          if(mesh.in_mesh[c] && sweep.cell_quality(static_cast<int>(c)) < opt.flips.quality_threshold)
+            candidates.push_back(view.cells()[c]);
+      stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure,
+                                 known ? &candidates : nullptr);
       if(stats.topology.total() > 0) reread();
     }
     if(opt.moving_vertices != Moving_vertices::NONE && opt.max_min_threshold > 0)
