@@ -15,7 +15,7 @@
 // boundary.
 //
 //   bench_pipeline [--small] [--iterations N] [--flip-threshold Q] [--flip-outside] [--worst N]
-//                  [--only GENERATED_INPUT] [mesh or .off files...]
+//                  [--only GENERATED_INPUT] [--threads N] [mesh or .off files...]
 #include "compare/compare.h"
 #include "inputs/generated_inputs.h"
 
@@ -106,6 +106,7 @@ const Variant variants[] = {{"B-ODT, no flips", BODT::Moving_vertices::ALL, fals
 
 BODT::Flip_options flip_options;
 std::size_t worst_listed = 0;
+int threads = 0;
 
 // The worst tetrahedra of a C3T3's complex: angles, shape, faces and vertices on the boundary.
 template <class C3T3>
@@ -160,6 +161,7 @@ void run(const std::string& label, const Mesh& input, std::size_t iterations)
     opt.vertex_insertion = v.insertion;
     if(!v.max_min) opt.max_min_threshold = 0;
     opt.flips = flip_options;
+    opt.threads = threads;
     Totals t;
     const auto r = BODT::smooth(m, opt, t);
     row(label, v.name, before, BODT::mesh_quality(m), &r, &t);
@@ -183,6 +185,7 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--flip-outside")) flip_options.flip_outside = true;
     else if(!std::strcmp(argv[i], "--worst") && i + 1 < argc) worst_listed = std::stoul(argv[++i]);
     else if(!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+    else if(!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::stoi(argv[++i]);
     else files.push_back(argv[i]);
   }
   header();

@@ -99,6 +99,11 @@ BODT::Smoothing_options options_of(const py::dict& given)
     else if(key == "vertex_insertion") o.vertex_insertion = v.cast<bool>();
     else if(key == "max_vertex_insertions") o.max_vertex_insertions = v.cast<long long>();
     else if(key == "max_min_threshold") o.max_min_threshold = v.cast<double>();
+    else if(key == "threads")
+    {
+      o.threads = v.cast<int>();
+      if(o.threads < 0) throw py::value_error("threads must be 0 (every core) or more");
+    }
     else if(key == "feature_edge_ratio") o.tensor_voting.edge_ratio = v.cast<double>();
     else if(key == "feature_corner_ratio") o.tensor_voting.corner_ratio = v.cast<double>();
     else throw py::type_error("smooth() got an unexpected option '" + key + "'");

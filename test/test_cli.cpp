@@ -14,6 +14,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -214,6 +216,28 @@ TEST(Cli, FormatOptionChoosesTheWriter)
 }
 
 // `quality` writes nothing, so it does not say that skipped sections will not be written back.
+// The output file is the same, byte for byte, on any number of threads.
+TEST(Cli, ThreadsDoNotChangeTheOutputBytes)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  std::string out, reference;
+  for(const char* threads : {"1", "2", "4"})
+  {
+    const fs::path result = dir / (std::string("out") + threads + ".mesh");
+    ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(result) + " --quiet --threads " + threads, out, dir), 0) << out;
+    std::ifstream file(result, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if(reference.empty())
+      reference = bytes;
+    else
+      EXPECT_TRUE(bytes == reference) << threads << " threads";
+  }
+  std::ifstream original(in, std::ios::binary);
+  EXPECT_NE(std::string((std::istreambuf_iterator<char>(original)), std::istreambuf_iterator<char>()), reference);
+  EXPECT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "x.mesh") + " --threads -1", out, dir), 2);
+}
+
 TEST(Cli, QualityDoesNotTalkAboutWritingBack)
 {
   const fs::path dir = tmp_dir();

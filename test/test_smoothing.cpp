@@ -9,6 +9,7 @@
 #include <CGAL/BODT_3/boundary_distance.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
+#include <CGAL/BODT_3/sweep_order.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -17,7 +18,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <string>
 #include <vector>
 
 using namespace bodt_inputs;
@@ -174,6 +181,100 @@ TEST_P(Smoothing, SameInputSameOutput)
   EXPECT_EQ(finite_points(a.triangulation()), finite_points(b.triangulation()));
 }
 
+// Everything a user gets back, exactly: every vertex position (as hexadecimal
+// floats), every cell by vertex numbers with its subdomain, every facet of the
+// complex with its patch, in the triangulation's own order.
+template <class C3T3>
+std::string snapshot(const C3T3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  auto cp = tr.geom_traits().construct_point_3_object();
+  std::ostringstream out;
+  std::map<typename C3T3::Vertex_handle, int> number;
+  char buffer[128];
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+  {
+    const auto p = cp(v->point());
+    std::snprintf(buffer, sizeof buffer, "%a %a %a %d\n", p.x(), p.y(), p.z(), c3t3.in_dimension(v));
+    out << buffer;
+    number.emplace(v, static_cast<int>(number.size()));
+  }
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    out << number[c->vertex(0)] << ' ' << number[c->vertex(1)] << ' ' << number[c->vertex(2)] << ' '
+        << number[c->vertex(3)] << ' ' << c3t3.subdomain_index(c) << '\n';
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
+    std::array<int, 3> t;
+    for(int k = 0, m = 0; k < 4; ++k)
+      if(k != f->second) t[m++] = number[f->first->vertex(k)];
+    std::sort(t.begin(), t.end());
+    const auto patch = c3t3.surface_patch_index(*f);
+    out << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << patch.first << ' ' << patch.second << '\n';
+  }
+  return out.str();
+}
+
+// The default pipeline (sweeps, flips, max-min steps, insertion) gives the same
+// mesh, bit for bit, on 1, 2 and 4 threads.
+TEST_P(Smoothing, SameOutputOnAnyNumberOfThreads)
+{
+  const Generated_mesh input = make_input(GetParam(), Size::small);
+  std::string reference;
+  for(int threads : {1, 2, 4})
+  {
+    C3t3 c3t3 = input.c3t3;
+    CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::max_iteration_number = 6,
+                               CGAL::parameters::number_of_threads = threads);
+    const std::string now = snapshot(c3t3);
+    if(threads == 1)
+      reference = now;
+    else
+      EXPECT_TRUE(now == reference) << threads << " threads give another mesh than one thread";
+  }
+  EXPECT_NE(reference, snapshot(input.c3t3)) << "the pipeline changed nothing: the test would prove nothing";
+}
+
+// The sweep's colouring: every movable vertex once, and no two vertices of a
+// colour in one cell or in one hull check (what lets them move concurrently).
+template <class K>
+void expect_valid_colouring(const BODT::Smoothing_mesh<K>& mesh, const std::vector<char>& movable)
+{
+  const BODT::Sweep_order order = BODT::sweep_order(mesh, movable);
+  std::vector<int> colour(mesh.number_of_vertices(), -1);
+  for(std::size_t k = 0; k + 1 < order.colour_begin.size(); ++k)
+    for(int i = order.colour_begin[k]; i < order.colour_begin[k + 1]; ++i)
+    {
+      ASSERT_EQ(colour[order.vertices[i]], -1) << "vertex visited twice";
+      colour[order.vertices[i]] = static_cast<int>(k);
+    }
+  for(std::size_t v = 0; v < movable.size(); ++v) EXPECT_EQ(colour[v] >= 0, movable[v] != 0);
+  std::size_t clashes = 0;
+  for(const auto& c : mesh.cells)
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j)
+        clashes += colour[c[i]] >= 0 && colour[c[i]] == colour[c[j]] ? 1 : 0;
+  std::size_t hull_checks = 0;
+  for(const auto& h : mesh.hull_checks)
+    for(int k = 0; k < 3; ++k, ++hull_checks)
+      clashes += colour[h[k]] >= 0 && colour[h[k]] == colour[h[3]] ? 1 : 0;
+  EXPECT_EQ(clashes, 0u);
+  EXPECT_GT(order.colour_begin.size(), 2u);
+}
+
+TEST_P(Smoothing, ColouringSeparatesEveryCellAndHullCheck)
+{
+  Generated_mesh input = make_input(GetParam(), Size::small);
+  BODT::C3t3_labels<C3t3> labels(input.c3t3);
+  BODT::Triangulation_view<BODT::C3t3_labels<C3t3>> view(labels);
+  const auto& mesh = view.mesh();
+  // Every vertex movable, and a random half: the colouring holds for any choice.
+  CGAL::Random random(static_cast<unsigned>(GetParam()) + 7);
+  std::vector<char> all(mesh.number_of_vertices(), 1), half(mesh.number_of_vertices());
+  for(char& m : half) m = random.get_bool() ? 1 : 0;
+  expect_valid_colouring(mesh, all);
+  expect_valid_colouring(mesh, half);
+}
+
 INSTANTIATE_TEST_SUITE_P(All, Smoothing, ::testing::ValuesIn(all_shapes()),
                          [](const ::testing::TestParamInfo<Shape>& info) { return name(info.param); });
 
@@ -194,6 +295,32 @@ TEST(RandomSphere, BoundaryVerticesMoveAndTheHullStaysConvex)
   // Every vertex is on the boundary and moves in its tangent plane, on a coarse
   // sphere: the boundary moves by about 1.2% of the box (measured), under 2%.
   EXPECT_LT(BODT::relative_hausdorff_distance(surface_before, BODT::boundary_triangles(tr)), 2e-2);
+}
+
+// A triangulation whose every vertex is on its convex hull: the hull checks
+// constrain the colouring, and the result is the same on any number of threads.
+TEST(RandomSphere, SameOutputOnAnyNumberOfThreadsAndAValidColouring)
+{
+  const Delaunay input = make_random_sphere();
+  {
+    Delaunay tr = input;
+    BODT::Triangulation_labels<Delaunay> labels(tr);
+    BODT::Triangulation_view<BODT::Triangulation_labels<Delaunay>> view(labels);
+    ASSERT_FALSE(view.mesh().hull_checks.empty());
+    expect_valid_colouring(view.mesh(), std::vector<char>(view.mesh().number_of_vertices(), 1));
+  }
+  std::vector<Point> reference;
+  for(int threads : {1, 2, 4})
+  {
+    Delaunay tr = input;
+    CGAL::bodt_optimize_mesh_3(tr, CGAL::parameters::max_iteration_number = 6,
+                               CGAL::parameters::number_of_threads = threads);
+    if(threads == 1)
+      reference = finite_points(tr);
+    else
+      EXPECT_TRUE(finite_points(tr) == reference) << threads << " threads";
+  }
+  EXPECT_NE(reference, finite_points(input));
 }
 
 TEST(Visitor, ReportsEveryIteration)

@@ -262,7 +262,7 @@ TEST(Flips, EdgeRemovalChoosesTheBetterConfiguration)
       const Snapshot after = snapshot(b.c3t3);
       expect_kept(before, after);
       const bool removed = !b.c3t3.triangulation().tds().is_edge(b.handles[0], b.handles[1]);
-      if(worst_of(p, fan(m)) > before.worst + 1e-9) EXPECT_TRUE(removed);   // a better one exists
+      if(worst_of(p, fan(m)) > before.worst + 1e-9) { EXPECT_TRUE(removed); }   // a better one exists
       if(removed)
       {
         EXPECT_GT(after.worst, before.worst);
@@ -298,11 +298,14 @@ TEST(Flips, MultiFaceRemovalChoosesTheBetterConfiguration)
         ++created;
         EXPECT_GT(after.worst, before.worst);
         EXPECT_EQ(after.cells, static_cast<std::size_t>(m));
-        if(m == 3) EXPECT_EQ(stats.flips_2_3, 1u);
+        if(m == 3) { EXPECT_EQ(stats.flips_2_3, 1u); }
       }
       all += stats;
       // The pass ends at least as well as both configurations it can reach.
-      if(worst_of(p, around_edge(m)) > before.worst + 1e-9) EXPECT_GE(after.worst, worst_of(p, around_edge(m)) - 1e-9);
+      if(worst_of(p, around_edge(m)) > before.worst + 1e-9)
+      {
+        EXPECT_GE(after.worst, worst_of(p, around_edge(m)) - 1e-9);
+      }
     }
   EXPECT_GT(created, 3);
   EXPECT_GT(all.flips_2_3, 0u);

@@ -132,6 +132,8 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
 ///    `max_min_threshold` (default 0.34: stars whose worst dihedral sine is below it
 ///    get max-min steps after the flips; 0: off);
 ///  - `smoothing_method`: `BODT_3::Smoothing_method::BODT` (default) or `NODT`;
+///  - `number_of_threads` (default 0: every core the process may use): the
+///    smoothing sweeps run in parallel; the result does not depend on it;
 ///  - `feature_edge_ratio`, `feature_corner_ratio`: tensor voting thresholds;
 ///  - `progress_visitor`: an object with `after_classification(const BODT_3::Smoothing_result&)`
 ///    and `after_iteration(const BODT_3::Iteration_stats&)`, copied.

@@ -173,6 +173,9 @@ Command add_smooth(CLI::App& command)
                      "max-min steps at the vertices whose worst tetrahedron has a dihedral sine below S "
                      "(default 0.34, about 20 degrees; 0: off)")
       ->check(CLI::Range(0., 1.));
+  command.add_option("--threads", o->smoothing.threads,
+                     "threads of the smoothing sweeps (default 0: every core); the output does not depend on it")
+      ->check(CLI::Range(0, 4096));
   command.add_option("--report", o->report, "write a JSON report: options, every sweep, quality before and after");
   command.add_option("--html", o->html,
                      "write a self-contained HTML page: quality table, subdomain volumes and the dihedral-angle "

@@ -29,6 +29,10 @@ namespace BODT_3 {
 /// worst cell never gets worse, nor does either extreme angle.
 ///
 /// A refused move is retried at 1/2, 1/4 and 1/8 of its length before giving up.
+///
+/// What one attempt leaves behind (the star's new qualities, why it was refused)
+/// lives in a `Trial` that the caller owns: vertices with disjoint stars can be
+/// judged and moved concurrently, each thread with its own trial.
 template <class K>
 class Move_guard
 {
@@ -45,6 +49,14 @@ public:
     inverts_outside_cell,
     breaks_convex_hull,
     worsens_quality
+  };
+
+  /// The state of one attempt, owned by the caller (one per thread).
+  struct Trial
+  {
+    std::vector<double> qualities;   // the star's mesh cells at the position judged last
+    Refusal last_refusal = Refusal::worsens_quality;
+    Refusal first_refusal = Refusal::worsens_quality;   // of the full-length move
   };
 
   Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard, const Dihedral_bounds& bounds,
@@ -70,7 +82,7 @@ public:
   /// each position goes through `place` first (NODT projects it on the boundary).
   /// Returns the fraction of X applied (0 when the vertex stays).
   template <class Place>
-  double move(int v, const Vector& X, const Place& place)
+  double move(int v, const Vector& X, const Place& place, Trial& trial)
   {
     const Point x0 = mesh_.points[v];
     double fraction = 1.0;
@@ -78,23 +90,20 @@ public:
     {
       const Point p = place(x0 + fraction * X);
       if(p == x0) return 0.0;
-      if(accepts(v, p))
+      if(accepts(v, p, trial))
       {
-        apply(v, p);
+        apply(v, p, trial);
         return fraction;
       }
-      if(h == 0) first_refusal_ = last_refusal_;
+      if(h == 0) trial.first_refusal = trial.last_refusal;
     }
     return 0.0;
   }
 
-  double move(int v, const Vector& X)
+  double move(int v, const Vector& X, Trial& trial)
   {
-    return move(v, X, [](const Point& p) { return p; });
+    return move(v, X, [](const Point& p) { return p; }, trial);
   }
-
-  /// Why the full-length move of the last refused vertex was refused.
-  Refusal first_refusal() const { return first_refusal_; }
 
   /// The quality of cell `c` now.
   double cell_quality(int c) const { return quality_[c]; }
@@ -112,17 +121,17 @@ public:
   }
 
   /// The worst quality of the mesh cells around the vertex at the position the
-  /// last successful `accepts` judged (2 without mesh cells).
-  double accepted_worst() const
+  /// last successful `accepts` with this trial judged (2 without mesh cells).
+  static double accepted_worst(const Trial& trial)
   {
     double worst = 2;
-    for(double q : scratch_) worst = std::min(worst, q);
+    for(double q : trial.qualities) worst = std::min(worst, q);
     return worst;
   }
 
   /// Whether `v` may go to `p` (see the class comment). Leaves the star's new
-  /// cell qualities in a buffer that `apply` uses.
-  bool accepts(int v, const Point& p)
+  /// cell qualities in the trial, for `apply`.
+  bool accepts(int v, const Point& p, Trial& trial) const
   {
     const auto& m = mesh_;
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
@@ -130,7 +139,7 @@ public:
       const auto& f = m.incidences[k].face;
       if(CGAL::orientation(p, m.points[f[0]], m.points[f[1]], m.points[f[2]]) != CGAL::POSITIVE)
       {
-        last_refusal_ = m.in_mesh[m.incidences[k].cell] ? Refusal::inverts_mesh_cell : Refusal::inverts_outside_cell;
+        trial.last_refusal = m.in_mesh[m.incidences[k].cell] ? Refusal::inverts_mesh_cell : Refusal::inverts_outside_cell;
         return false;
       }
     }
@@ -142,15 +151,15 @@ public:
       const Point& c = h[2] == v ? p : m.points[h[2]];
       if(CGAL::orientation(a, b, c, m.points[h[3]]) == CGAL::NEGATIVE)
       {
-        last_refusal_ = Refusal::breaks_convex_hull;
+        trial.last_refusal = Refusal::breaks_convex_hull;
         return false;
       }
     }
-    last_refusal_ = Refusal::worsens_quality;
+    trial.last_refusal = Refusal::worsens_quality;
     if(!quality_guard_) return true;
 
     const double old_worst = worst_around(v);
-    scratch_.clear();
+    trial.qualities.clear();
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {
       const int c = m.incidences[k].cell;
@@ -161,13 +170,13 @@ public:
       if(q < old_worst ||
          !bounds_.contains(p, a, b, d, measure_ == Quality_measure::min_dihedral_sine ? q : 0.0))
         return false;
-      scratch_.push_back(q);
+      trial.qualities.push_back(q);
     }
     return true;
   }
 
-  /// Moves `v` to `p`, which `accepts(v, p)` has just approved.
-  void apply(int v, const Point& p)
+  /// Moves `v` to `p`, which `accepts(v, p, trial)` has just approved.
+  void apply(int v, const Point& p, const Trial& trial)
   {
     mesh_.points[v] = p;
     if(!quality_guard_) return;
@@ -175,7 +184,7 @@ public:
     for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
     {
       const int c = mesh_.incidences[k].cell;
-      if(mesh_.in_mesh[c]) quality_[c] = scratch_[i++];
+      if(mesh_.in_mesh[c]) quality_[c] = trial.qualities[i++];
     }
   }
 
@@ -185,9 +194,6 @@ private:
   Dihedral_bounds bounds_;
   Quality_measure measure_;
   std::vector<double> quality_;   // per cell
-  std::vector<double> scratch_;
-  Refusal last_refusal_ = Refusal::worsens_quality;
-  Refusal first_refusal_ = Refusal::worsens_quality;
 };
 
 } // namespace BODT_3

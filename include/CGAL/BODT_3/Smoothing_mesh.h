@@ -73,6 +73,8 @@ struct Smoothing_mesh
   std::vector<std::array<int, 2>> boundary_facets;   // (a, b): (x0, a, b) outward of the mesh
   std::vector<int> hull_begin;             // per vertex, into `vertex_hull_checks`
   std::vector<Hull_check> vertex_hull_checks;
+  std::vector<int> checked_begin;          // per vertex, into `checked_by`
+  std::vector<int> checked_by;             // vertices with a hull check whose far vertex it is
   std::vector<int> neighbor;               // per cell facet (4 c + i): cell across, or -1
 
   std::size_t number_of_vertices() const { return points.size(); }
@@ -107,37 +109,44 @@ struct Smoothing_mesh
         incidences[fill[cells[c][j]]++] = {c, {cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]}};
       }
 
-    // Vertex -> boundary facets of the mesh around it, oriented outward.
-    std::vector<std::vector<std::array<int, 2>>> per_vertex(nv);
-    for(int c = 0; c < nc; ++c)
-      for(int i = 0; i < 4; ++i)
-      {
-        if(!is_mesh_boundary(c, i)) continue;
-        // kOpposite[i] is oriented with p_i on its negative side: its normal points out.
-        const auto& o = internal::kOpposite[i];
-        const int f[3] = {cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]};
-        for(int k = 0; k < 3; ++k)
-          per_vertex[f[k]].push_back({f[(k + 1) % 3], f[(k + 2) % 3]});
-      }
+    // Vertex -> boundary facets of the mesh around it, oriented outward. Counted
+    // first, then filled in the same order (re-derived after every flip pass).
     boundary_begin.assign(nv + 1, 0);
-    boundary_facets.clear();
-    for(int v = 0; v < nv; ++v)
-    {
-      boundary_facets.insert(boundary_facets.end(), per_vertex[v].begin(), per_vertex[v].end());
-      boundary_begin[v + 1] = static_cast<int>(boundary_facets.size());
-    }
+    auto each_boundary_corner = [&](auto&& f) {
+      for(int c = 0; c < nc; ++c)
+        for(int i = 0; i < 4; ++i)
+        {
+          if(!is_mesh_boundary(c, i)) continue;
+          // kOpposite[i] is oriented with p_i on its negative side: its normal points out.
+          const auto& o = internal::kOpposite[i];
+          const int t[3] = {cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]};
+          for(int k = 0; k < 3; ++k) f(t[k], std::array<int, 2>{t[(k + 1) % 3], t[(k + 2) % 3]});
+        }
+    };
+    each_boundary_corner([&](int v, const std::array<int, 2>&) { ++boundary_begin[v + 1]; });
+    for(int v = 0; v < nv; ++v) boundary_begin[v + 1] += boundary_begin[v];
+    boundary_facets.resize(boundary_begin[nv]);
+    fill.assign(boundary_begin.begin(), boundary_begin.end() - 1);
+    each_boundary_corner([&](int v, const std::array<int, 2>& e) { boundary_facets[fill[v]++] = e; });
 
-    // Vertex -> hull checks involving it as a facet vertex.
-    std::vector<std::vector<Hull_check>> hull_per_vertex(nv);
-    for(const Hull_check& h : hull_checks)
-      for(int k = 0; k < 3; ++k) hull_per_vertex[h[k]].push_back(h);
+    // Vertex -> hull checks involving it as a facet vertex, and the vertices whose
+    // checks have it as far vertex.
     hull_begin.assign(nv + 1, 0);
-    vertex_hull_checks.clear();
+    for(const Hull_check& h : hull_checks)
+      for(int k = 0; k < 3; ++k) ++hull_begin[h[k] + 1];
+    for(int v = 0; v < nv; ++v) hull_begin[v + 1] += hull_begin[v];
+    vertex_hull_checks.resize(hull_begin[nv]);
+    fill.assign(hull_begin.begin(), hull_begin.end() - 1);
+    for(const Hull_check& h : hull_checks)
+      for(int k = 0; k < 3; ++k) vertex_hull_checks[fill[h[k]]++] = h;
+    checked_begin.assign(nv + 1, 0);
     for(int v = 0; v < nv; ++v)
-    {
-      vertex_hull_checks.insert(vertex_hull_checks.end(), hull_per_vertex[v].begin(), hull_per_vertex[v].end());
-      hull_begin[v + 1] = static_cast<int>(vertex_hull_checks.size());
-    }
+      for(int k = hull_begin[v]; k < hull_begin[v + 1]; ++k) ++checked_begin[vertex_hull_checks[k][3] + 1];
+    for(int v = 0; v < nv; ++v) checked_begin[v + 1] += checked_begin[v];
+    checked_by.resize(checked_begin[nv]);
+    fill.assign(checked_begin.begin(), checked_begin.end() - 1);
+    for(int v = 0; v < nv; ++v)
+      for(int k = hull_begin[v]; k < hull_begin[v + 1]; ++k) checked_by[fill[vertex_hull_checks[k][3]]++] = v;
   }
 
   /// Fills `star` with the mesh cells around `v` and the boundary facets through it.

@@ -9,6 +9,7 @@
 #include <CGAL/BODT_3/Smoothing_mesh.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Tensor_voting.h>
+#include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/Vertex_classification.h>
 #include <CGAL/BODT_3/Volume_preserving_move.h>
 #include <CGAL/BODT_3/sweep_order.h>
@@ -36,7 +37,8 @@ public:
   Smoothing_sweep(Smoothing_mesh<K>& mesh, const Vertex_classification& cls, const Smoothing_options& opt,
                   const Dihedral_bounds& bounds)
     : mesh_(mesh), cls_(cls), opt_(opt), guard_(mesh, opt.quality_guard, bounds, opt.quality_measure),
-      dirty_(mesh.number_of_vertices(), 1), moved_once_(mesh.number_of_vertices(), 0)
+      workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1), moved_now_(mesh.number_of_vertices(), 0),
+      moved_once_(mesh.number_of_vertices(), 0)
   {
     if(opt.smoothing_method == Smoothing_method::NODT) projection_ = std::make_unique<Boundary_projection<K>>(mesh);
     derive();
@@ -48,6 +50,7 @@ public:
   void refresh(const std::vector<int>& changed)
   {
     dirty_.resize(mesh_.number_of_vertices(), 1);
+    moved_now_.resize(mesh_.number_of_vertices(), 0);
     moved_once_.resize(mesh_.number_of_vertices(), 0);
     for(int v : changed) dirty_[v] = 1;
     derive();
@@ -56,51 +59,40 @@ public:
     guard_.refresh();
   }
 
-  /// One sweep; fills the move counts of `stats`.
+  /// One sweep; fills the move counts of `stats`. Colour by colour: vertices of
+  /// one colour share no cell and check no hull facet of one another, so their
+  /// moves read nothing the others write; they run concurrently (`opt.threads`),
+  /// and the result is the same, bit for bit, on any number of threads.
   void run(Iteration_stats& stats)
   {
-    Vertex_star<K> star;
-    for(int v : order_.vertices)
+    for(std::size_t k = 0; k + 1 < order_.colour_begin.size(); ++k)
     {
-      if(!dirty_[v]) continue;
-      dirty_[v] = 0;
-      const Vertex_kind kind = cls_.kind[v];
-      mesh_.gather_star(v, star);
-      Vector direction(0, 0, 0);
-      if(kind == Vertex_kind::feature)
+      const int begin = order_.colour_begin[k], end = order_.colour_begin[k + 1];
+      workers_.for_each(begin, end, [this](Worker& w, int i) { visit(order_.vertices[i], w); });
+      // Then, in the sequential order: what the moves changed.
+      for(int i = begin; i < end; ++i)
       {
-        const auto& nb = cls_.curve_neighbors[v];
-        direction = nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]]
-                               : tensor_vote(star, opt_.tensor_voting).direction;
+        const int v = order_.vertices[i];
+        if(!moved_now_[v]) continue;
+        moved_now_[v] = 0;
+        moved_once_[v] = 1;
+        moved_.push_back(v);
+        dirty_[v] = 1;
+        mark_dependents(v);
       }
-      const bool natural = projection_ && kind == Vertex_kind::surface;
-      const Vector X = natural ? Nodt_move()(star) : mover_(star, kind, direction);
-      if(X == CGAL::NULL_VECTOR) continue;
-      const double fraction = natural ? guard_.move(v, X, *projection_) : guard_.move(v, X);
-      if(fraction == 0)
-      {
-        ++stats.refused;
-        using Refusal = typename Move_guard<K>::Refusal;
-        switch(guard_.first_refusal())
-        {
-        case Refusal::inverts_mesh_cell: ++stats.refused_inverting_mesh_cell; break;
-        case Refusal::inverts_outside_cell: ++stats.refused_inverting_outside_cell; break;
-        case Refusal::breaks_convex_hull: ++stats.refused_breaking_hull; break;
-        case Refusal::worsens_quality: ++stats.refused_worsening_quality; break;
-        }
-        continue;
-      }
-      ++stats.moved;
-      if(fraction < 1) ++stats.shortened;
-      moved_once_[v] = 1;
-      moved_.push_back(v);
-      dirty_[v] = 1;
-      mark_dependents(v);
-      double volume = 0;
-      for(const auto& c : star.cells) volume += CGAL::determinant(c.a - star.x0, c.b - star.x0, c.c - star.x0);
-      const double size = std::cbrt(volume / 6.0 / static_cast<double>(star.cells.size()));
-      stats.max_relative_move = std::max(stats.max_relative_move, fraction * std::sqrt(X.squared_length()) / size);
     }
+    workers_.each_worker([&stats](Worker& w) {
+      const Iteration_stats& c = w.counts;
+      stats.moved += c.moved;
+      stats.shortened += c.shortened;
+      stats.refused += c.refused;
+      stats.refused_inverting_mesh_cell += c.refused_inverting_mesh_cell;
+      stats.refused_inverting_outside_cell += c.refused_inverting_outside_cell;
+      stats.refused_breaking_hull += c.refused_breaking_hull;
+      stats.refused_worsening_quality += c.refused_worsening_quality;
+      stats.max_relative_move = std::max(stats.max_relative_move, c.max_relative_move);
+      w.counts = Iteration_stats();
+    });
   }
 
   /// The fallback where B-ODT stalls: each movable vertex of a mesh cell whose
@@ -147,16 +139,16 @@ public:
           for(double sign : {1.0, -1.0})
           {
             const typename K::Point_3 p = mesh_.points[v] + (sign * h) * dirs[d];
-            if(guard_.accepts(v, p) && guard_.accepted_worst() > best_worst)
+            if(guard_.accepts(v, p, trial_) && Move_guard<K>::accepted_worst(trial_) > best_worst)
             {
-              best_worst = guard_.accepted_worst();
+              best_worst = Move_guard<K>::accepted_worst(trial_);
               best = p;
             }
           }
         if(best_worst > worst)
         {
-          guard_.accepts(v, best);
-          guard_.apply(v, best);
+          guard_.accepts(v, best, trial_);
+          guard_.apply(v, best, trial_);
           worst = best_worst;
           moved = true;
         }
@@ -199,14 +191,6 @@ private:
     // The vertices to revisit when u moves: the movable vertices sharing a cell
     // with u, and those with a hull check whose far vertex is u. Flat (one array
     // for all): re-derived after every pass that changes the connectivity.
-    std::vector<int> far_begin(nv + 1, 0), far;   // per far vertex, the vertices checking it
-    for(int v : order_.vertices)
-      for(int k = mesh_.hull_begin[v]; k < mesh_.hull_begin[v + 1]; ++k) ++far_begin[mesh_.vertex_hull_checks[k][3] + 1];
-    for(int u = 0; u < nv; ++u) far_begin[u + 1] += far_begin[u];
-    far.resize(far_begin[nv]);
-    std::vector<int> fill(far_begin.begin(), far_begin.end() - 1);
-    for(int v : order_.vertices)
-      for(int k = mesh_.hull_begin[v]; k < mesh_.hull_begin[v + 1]; ++k) far[fill[mesh_.vertex_hull_checks[k][3]]++] = v;
     std::vector<int> stamp(nv, -1);
     dependent_begin_.assign(nv + 1, 0);
     dependents_.clear();
@@ -220,9 +204,60 @@ private:
       };
       for(int k = mesh_.incidence_begin[u]; k < mesh_.incidence_begin[u + 1]; ++k)
         for(int w : mesh_.incidences[k].face) add(w);
-      for(int k = far_begin[u]; k < far_begin[u + 1]; ++k) add(far[k]);
+      for(int k = mesh_.checked_begin[u]; k < mesh_.checked_begin[u + 1]; ++k) add(mesh_.checked_by[k]);
     }
     dependent_begin_[nv] = static_cast<int>(dependents_.size());
+  }
+
+  // What one thread keeps: its scratch space and its counts of the sweep.
+  struct Worker
+  {
+    Vertex_star<K> star;
+    typename Move_guard<K>::Trial trial;
+    Iteration_stats counts;
+  };
+
+  // One vertex's move; writes only the vertex, the qualities of its star's cells,
+  // its own flags and the worker.
+  void visit(int v, Worker& w)
+  {
+    if(!dirty_[v]) return;
+    dirty_[v] = 0;
+    Vertex_star<K>& star = w.star;
+    Iteration_stats& stats = w.counts;
+    const Vertex_kind kind = cls_.kind[v];
+    mesh_.gather_star(v, star);
+    Vector direction(0, 0, 0);
+    if(kind == Vertex_kind::feature)
+    {
+      const auto& nb = cls_.curve_neighbors[v];
+      direction = nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]]
+                             : tensor_vote(star, opt_.tensor_voting).direction;
+    }
+    const bool natural = projection_ && kind == Vertex_kind::surface;
+    const Vector X = natural ? Nodt_move()(star) : mover_(star, kind, direction);
+    if(X == CGAL::NULL_VECTOR) return;
+    const double fraction = natural ? guard_.move(v, X, *projection_, w.trial) : guard_.move(v, X, w.trial);
+    if(fraction == 0)
+    {
+      ++stats.refused;
+      using Refusal = typename Move_guard<K>::Refusal;
+      switch(w.trial.first_refusal)
+      {
+      case Refusal::inverts_mesh_cell: ++stats.refused_inverting_mesh_cell; break;
+      case Refusal::inverts_outside_cell: ++stats.refused_inverting_outside_cell; break;
+      case Refusal::breaks_convex_hull: ++stats.refused_breaking_hull; break;
+      case Refusal::worsens_quality: ++stats.refused_worsening_quality; break;
+      }
+      return;
+    }
+    ++stats.moved;
+    if(fraction < 1) ++stats.shortened;
+    moved_now_[v] = 1;
+    double volume = 0;
+    for(const auto& c : star.cells) volume += CGAL::determinant(c.a - star.x0, c.b - star.x0, c.c - star.x0);
+    const double size = std::cbrt(volume / 6.0 / static_cast<double>(star.cells.size()));
+    stats.max_relative_move = std::max(stats.max_relative_move, fraction * std::sqrt(X.squared_length()) / size);
   }
 
   void mark_dependents(int v)
@@ -234,12 +269,15 @@ private:
   const Vertex_classification& cls_;
   const Smoothing_options& opt_;
   Move_guard<K> guard_;
+  typename Move_guard<K>::Trial trial_;   // for the sequential max-min steps
+  Thread_workers<Worker> workers_;
   Volume_preserving_move mover_;
   std::unique_ptr<Boundary_projection<K>> projection_;   // NODT: the input's boundary
   Sweep_order order_;
   std::vector<int> dependent_begin_;   // per vertex, into dependents_
   std::vector<int> dependents_;
   std::vector<char> dirty_;
+  std::vector<char> moved_now_;   // moved in the colour being swept
   std::vector<char> moved_once_;
   std::vector<int> moved_;
 };

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -122,7 +123,13 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     {
       const int id = view.index(a.vertex);
       cls.kind[id] = a.kind;
-      if(a.a != Vertex_handle()) cls.curve_neighbors[id] = {view.index(a.a), view.index(a.b)};
+      if(a.a == Vertex_handle()) continue;
+      // A split curve edge a b: the new vertex sits between them on the curve.
+      const int ia = view.index(a.a), ib = view.index(a.b);
+      cls.curve_neighbors[id] = {ia, ib};
+      for(auto [end, other] : {std::pair<int, int>{ia, ib}, std::pair<int, int>{ib, ia}})
+        for(int& n : cls.curve_neighbors[end])
+          if(n == other) n = id;
     }
     changed.clear();
     for(auto v : touched)

@@ -13,9 +13,11 @@ namespace BODT_3 {
 
 /// The order in which a sweep visits the movable vertices: by colour, then by
 /// index, for a greedy colouring (in index order) in which no two vertices of a
-/// cell share a colour. Vertices of one colour have disjoint stars, so a parallel
-/// sweep may move them concurrently and still reproduce this sequential order
-/// exactly; the order depends on nothing but the mesh.
+/// cell share a colour, nor a vertex and the far vertex of one of its hull checks
+/// (`Smoothing_mesh::Hull_check`). Vertices of one colour then have disjoint
+/// stars and read nothing the others move, so a parallel sweep may move them
+/// concurrently and still reproduce this sequential order exactly; the order
+/// depends on nothing but the mesh.
 struct Sweep_order
 {
   std::vector<int> vertices;        // movable vertices in visiting order
@@ -32,9 +34,13 @@ Sweep_order sweep_order(const Smoothing_mesh<K>& mesh, const std::vector<char>& 
   for(int v = 0; v < nv; ++v)
   {
     if(!movable[v]) continue;
+    auto take = [&](int u) {
+      if(u != v && colour[u] >= 0) stamp[colour[u]] = v;
+    };
     for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
-      for(int u : mesh.cells[mesh.incidences[k].cell])
-        if(u != v && colour[u] >= 0) stamp[colour[u]] = v;
+      for(int u : mesh.cells[mesh.incidences[k].cell]) take(u);
+    for(int k = mesh.hull_begin[v]; k < mesh.hull_begin[v + 1]; ++k) take(mesh.vertex_hull_checks[k][3]);
+    for(int k = mesh.checked_begin[v]; k < mesh.checked_begin[v + 1]; ++k) take(mesh.checked_by[k]);
     int c = 0;
     while(c < colours && stamp[c] == v) ++c;
     if(c == colours)

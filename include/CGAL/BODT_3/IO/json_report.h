@@ -134,6 +134,7 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"vertex_insertion", o.vertex_insertion},
                      {"max_vertex_insertions", o.max_vertex_insertions},
                      {"max_min_threshold", o.max_min_threshold},
+                     {"threads", o.threads},
                      {"flip_quality_threshold", o.flips.quality_threshold},
                      {"insertion_quality_threshold", o.insertion.quality_threshold},
                      {"tensor_voting",

@@ -1,0 +1,68 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_THREAD_WORKERS_H
+#define CGAL_BODT_3_THREAD_WORKERS_H
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// The number of threads a run uses: `requested`, or with 0 every core the
+/// process may use (TBB's default concurrency, which respects CPU affinity).
+inline int thread_count(int requested)
+{
+  return requested > 0 ? requested : std::max(1, tbb::info::default_concurrency());
+}
+
+/// Loops over index ranges on a fixed number of threads (TBB, in its own arena),
+/// each thread with its own `Worker` (scratch space and counters). With one
+/// thread the same code runs on the one thread. Callers make the
+/// iterations independent; what the workers count must not depend on which
+/// worker counted it (sums, maxima), so that results do not depend on threads.
+template <class Worker>
+class Thread_workers
+{
+public:
+  explicit Thread_workers(int threads) : threads_(thread_count(threads)), arena_(threads_) {}
+
+  int threads() const { return threads_; }
+
+  /// Calls f(worker, i) for every i in [begin, end), and returns when all are done.
+  template <class F>
+  void for_each(int begin, int end, const F& f)
+  {
+    if(begin >= end) return;
+    arena_.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(begin, end, grain), [&](const tbb::blocked_range<int>& r) {
+        Worker& w = workers_.local();
+        for(int i = r.begin(); i != r.end(); ++i) f(w, i);
+      });
+    });
+  }
+
+  /// Visits every worker (in no particular order).
+  template <class G>
+  void each_worker(const G& g)
+  {
+    for(Worker& w : workers_) g(w);
+  }
+
+private:
+  static constexpr int grain = 32;   // vertices per task: a move costs a few microseconds
+
+  int threads_;
+  tbb::task_arena arena_;
+  tbb::enumerable_thread_specific<Worker> workers_;
+};
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_THREAD_WORKERS_H
