@@ -14,6 +14,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
@@ -189,4 +192,202 @@ TEST(Classification, InterfaceAndJunctionVerticesKeepEverySubdomainVolume)
       EXPECT_NEAR(p.x(), 2.0, 1e-12);
     }
   }
+}
+
+// Meshes that are not what they seem (issue 10, item 5): cracks, embedded
+// surfaces, and TetGen's list of every edge.
+namespace {
+
+// The grid [0, 4]^3 of `cube_grid`, its inner vertices moved off the grid by a
+// fixed pseudo-random amount, so that smoothing has work to do; vertices on the
+// plane z = 2 stay on it.
+BODT::Tet_mesh jittered_box()
+{
+  const int n = 4;
+  BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
+  CGAL::Random random(7);
+  for(auto& p : m.points)
+  {
+    double c[3] = {p.x(), p.y(), p.z()};
+    for(int k = 0; k < 3; ++k)
+      if(c[0] > 0 && c[0] < n && c[1] > 0 && c[1] < n && c[2] > 0 && c[2] < n && !(k == 2 && c[2] == 2))
+        c[k] += random.get_double(-0.2, 0.2);
+    p = Point(c[0], c[1], c[2]);
+  }
+  return m;
+}
+
+// Grid coordinate `axis` of vertex `v` of the 4 x 4 x 4 grid (its position before the jitter).
+int grid_coordinate(int v, int axis) { return axis == 0 ? v % 5 : axis == 1 ? v / 5 % 5 : v / 25; }
+
+// The faces of the grid's tetrahedra on the plane z = 2 whose grid x and y lie in
+// [lo, hi], each once.
+std::vector<std::array<int, 3>> faces_on_mid_plane(const BODT::Tet_mesh& m, int lo, int hi)
+{
+  std::set<std::array<int, 3>> faces;
+  for(const auto& t : m.tets)
+    for(int i = 0; i < 4; ++i)
+    {
+      std::array<int, 3> f = {t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]};
+      bool in = true;
+      for(int v : f)
+        in = in && grid_coordinate(v, 2) == 2 && grid_coordinate(v, 0) >= lo && grid_coordinate(v, 0) <= hi &&
+             grid_coordinate(v, 1) >= lo && grid_coordinate(v, 1) <= hi;
+      std::sort(f.begin(), f.end());
+      if(in) faces.insert(f);
+    }
+  return {faces.begin(), faces.end()};
+}
+
+double area(const BODT::Tet_mesh& m, const std::array<int, 3>& f)
+{
+  return 0.5 * std::sqrt(CGAL::cross_product(m.points[f[1]] - m.points[f[0]], m.points[f[2]] - m.points[f[0]])
+                             .squared_length());
+}
+
+void expect_valid_with_volume(const BODT::Tet_mesh& m, double volume)
+{
+  double sum = 0;
+  for(const auto& t : m.tets)
+  {
+    EXPECT_EQ(CGAL::orientation(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]), CGAL::POSITIVE);
+    sum += CGAL::volume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]);
+  }
+  EXPECT_NEAR(sum, volume, 1e-10 * volume);
+}
+
+// Adds the faces of the plane z = 2 within [lo, hi] as triangles labelled 7;
+// returns their area.
+double embed(BODT::Tet_mesh& m, int lo, int hi)
+{
+  double sum = 0;
+  for(const auto& f : faces_on_mid_plane(m, lo, hi))
+  {
+    m.triangles.push_back(f);
+    m.triangle_labels.push_back(7);
+    sum += area(m, f);
+  }
+  return sum;
+}
+
+// After the default pipeline: every vertex of a triangle labelled 7 (those of the
+// input among them) is on the plane z = 2 still, and the triangles labelled 7
+// cover the area they covered.
+void expect_embedded_surface_kept(const BODT::Tet_mesh& m, const std::vector<std::array<int, 3>>& input, double covered)
+{
+  for(const auto& f : input)
+    for(int v : f) EXPECT_NEAR(m.points[v].z(), 2.0, 1e-12) << "vertex " << v;
+  double sum = 0;
+  for(std::size_t f = 0; f < m.triangles.size(); ++f)
+  {
+    if(m.triangle_labels[f] != 7) continue;
+    sum += area(m, m.triangles[f]);
+    for(int v : m.triangles[f]) EXPECT_NEAR(m.points[v].z(), 2.0, 1e-12) << "vertex " << v;
+  }
+  EXPECT_NEAR(sum, covered, 1e-9 * covered);
+}
+
+} // namespace
+
+// A crack: the vertices of the plane z = 2 with x < 2 are doubled, the cells above
+// using the copies. Smoothing moved each copy on its own side and opened it.
+TEST(MeshesNotWhatTheySeem, CoincidentVerticesOfACrackStayCoincident)
+{
+  BODT::Tet_mesh m = jittered_box();
+  std::map<int, int> twin;
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    if(grid_coordinate(static_cast<int>(v), 2) == 2 && grid_coordinate(static_cast<int>(v), 0) < 2)
+    {
+      twin[static_cast<int>(v)] = static_cast<int>(m.points.size());
+      m.points.push_back(m.points[v]);
+      m.vertex_refs.push_back(0);
+    }
+  for(auto& t : m.tets)
+  {
+    const bool above = m.points[t[0]].z() + m.points[t[1]].z() + m.points[t[2]].z() + m.points[t[3]].z() > 8;
+    if(above)
+      for(int& v : t)
+        if(twin.count(v)) v = twin[v];
+  }
+  BODT::Smoothing_options opt;
+  const auto r = BODT::smooth(m, opt);
+  EXPECT_GT(r.moved_vertices, 0u);
+  EXPECT_GE(r.crack_vertices, 2 * twin.size());
+  for(const auto& [a, b] : twin)
+  {
+    EXPECT_EQ(std::memcmp(&m.points[a], &m.points[b], sizeof(Point)), 0) << "vertices " << a << " and " << b;
+    EXPECT_EQ(m.points[a].z(), 2.0);
+  }
+  expect_valid_with_volume(m, 64);
+}
+
+// Triangles labelled 7 on the plane z = 2 of a one-subdomain box, as TetGen and
+// libigl write internal facets: the smoothing moved their vertices off the plane.
+TEST(MeshesNotWhatTheySeem, EmbeddedSurfaceAcrossTheBoxIsKept)
+{
+  BODT::Tet_mesh m = jittered_box();
+  const double covered = embed(m, 0, 4);
+  const auto input = m.triangles;
+  BODT::Smoothing_options opt;
+  const auto r = BODT::smooth(m, opt);
+  EXPECT_GT(r.moved_vertices, 0u);
+  EXPECT_EQ(r.embedded_triangles, input.size());
+  for(int l : m.tet_labels) EXPECT_EQ(l, 1);
+  expect_embedded_surface_kept(m, input, covered);
+  expect_valid_with_volume(m, 64);
+}
+
+// The same with a sheet that ends inside the box (grid x and y in [1, 3]).
+TEST(MeshesNotWhatTheySeem, EmbeddedSheetInsideTheBoxIsKept)
+{
+  BODT::Tet_mesh m = jittered_box();
+  const double covered = embed(m, 1, 3);
+  const auto input = m.triangles;
+  BODT::Smoothing_options opt;
+  const auto r = BODT::smooth(m, opt);
+  EXPECT_GT(r.moved_vertices, 0u);
+  EXPECT_EQ(r.embedded_triangles, input.size());
+  expect_embedded_surface_kept(m, input, covered);
+  expect_valid_with_volume(m, 64);
+}
+
+// TetGen's `-e` lists every edge of the mesh, those on its segments (here the box's
+// edges) with marker 1, the others with 0: every vertex was on three listed edges
+// or more, a corner, and nothing moved.
+TEST(MeshesNotWhatTheySeem, TetGenEdgesOfEveryEdgeLeaveTheirVerticesFree)
+{
+  const int n = 4;
+  BODT::Tet_mesh m = jittered_box();
+  std::set<std::pair<int, int>> edges;
+  for(const auto& t : m.tets)
+    for(int a = 0; a < 4; ++a)
+      for(int b = a + 1; b < 4; ++b) edges.insert(std::minmax(t[a], t[b]));
+  for(const auto& e : edges)
+  {
+    m.edges.push_back({e.first, e.second});
+    const bool box_edge = count_on_box(m, e.first, n) >= 2 && count_on_box(m, e.second, n) >= 2 &&
+                          ((m.points[e.first].x() == m.points[e.second].x()) +
+                               (m.points[e.first].y() == m.points[e.second].y()) +
+                               (m.points[e.first].z() == m.points[e.second].z()) ==
+                           2);
+    m.edge_labels.push_back(box_edge ? 1 : 0);
+  }
+  const BODT::Tet_mesh before = m;
+  BODT::Smoothing_options opt;
+  const auto r = BODT::smooth(m, opt);
+  EXPECT_EQ(r.feature_vertices, 12u * (n - 1));
+  EXPECT_EQ(r.fixed_vertices, 8u);
+  EXPECT_GT(r.interior_vertices, 0u);
+  EXPECT_GT(r.moved_vertices, 0u);
+  for(std::size_t v = 0; v < before.points.size(); ++v)
+  {
+    const int on = count_on_box(before, static_cast<int>(v), n);
+    if(on < 2) continue;
+    for(int k = 0; k < 3; ++k)
+      if(before.points[v][k] == 0 || before.points[v][k] == n)
+      {
+        EXPECT_NEAR(m.points[v][k], before.points[v][k], 1e-12) << "vertex " << v << " left its edge";
+      }
+  }
+  expect_valid_with_volume(m, 64);
 }

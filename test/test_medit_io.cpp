@@ -89,6 +89,11 @@ std::vector<Bad_input> bad_inputs()
        with_line(with_line(with_line(with_line(g, 13, "2 3 4 5 2\n2 3 4 6 2"), 11, "3"), 9, "1 1 1 2\n-1 -1 -1 0"),
                  4, "6"),
        15, "third to share face"},
+      // A fourth vertex in the plane z = 0 of vertices 1, 2 and 3, in a tetrahedron labelled 0.
+      {"flat_tet_labelled_0.mesh",
+       with_line(with_line(with_line(with_line(g, 13, "2 3 4 5 2\n1 2 6 3 0"), 11, "3"), 9, "1 1 1 2\n1 1 0 0"), 4,
+                 "6"),
+       15, "tetrahedron 3 (1 2 6 3) is flat"},
       {"garbage.mesh", with_line(g, 6, "1 zero 0 1"), 6, "found 'zero'"},
       {"not_medit.mesh", "solid foo\nfacet normal 0 0 1\n", 1, "not a Medit mesh file"},
       {"dimension2.mesh", with_line(g, 2, "Dimension 2"), 2, "2D mesh"},

@@ -26,6 +26,12 @@ void Progress::after_classification(const BODT::Smoothing_result& r)
   std::fprintf(out_, "bodt smooth: %zu interior, %zu surface, %zu feature and %zu fixed vertices%s\n",
                r.interior_vertices, r.surface_vertices, r.feature_vertices, r.fixed_vertices,
                r.used_tensor_voting ? " (features by tensor voting)" : "");
+  if(r.crack_vertices > 0)
+    std::fprintf(out_, "bodt smooth: %zu vertices fixed on cracks (coincident vertices stay coincident)\n",
+                 r.crack_vertices);
+  if(r.embedded_triangles > 0)
+    std::fprintf(out_, "bodt smooth: %zu triangles inside subdomains kept as embedded surfaces\n",
+                 r.embedded_triangles);
 }
 
 void Progress::after_iteration(const BODT::Iteration_stats& s)

@@ -174,6 +174,8 @@ struct Smoothing_result
   std::size_t feature_vertices = 0;
   std::size_t fixed_vertices = 0;
   std::size_t non_manifold_vertices = 0;
+  std::size_t crack_vertices = 0;     // fixed: a coincident twin, or on a crack face (mesh files only)
+  std::size_t embedded_triangles = 0; // file triangles inside one subdomain, kept (mesh files only)
   bool used_tensor_voting = false;
   Topology_stats topology;            // summed over the iterations
   Insertion_stats insertion;          // summed over the iterations

@@ -207,7 +207,8 @@ Insertion_stats insertion_pass(Labels& labels, const Insertion_options& opt, con
       int f[3], m = 0;
       for(int k = 0; k < 4; ++k)
         if(k != shape.vertex) f[m++] = k;
-      const Point pf[3] = {point(c->vertex(f[0])), point(c->vertex(f[1])), point(c->vertex(f[2]))};
+      const Vertex_handle fv[3] = {c->vertex(f[0]), c->vertex(f[1]), c->vertex(f[2])};
+      const Point pf[3] = {point(fv[0]), point(fv[1]), point(fv[2])};
       const double s = shape.bary[0] + shape.bary[1] + shape.bary[2];
       const Point p(
           (shape.bary[0] * pf[0].x() + shape.bary[1] * pf[1].x() + shape.bary[2] * pf[2].x()) / s,
@@ -217,7 +218,11 @@ Insertion_stats insertion_pass(Labels& labels, const Insertion_options& opt, con
       if(split_facet(labels, c, shape.vertex, p, r))
       {
         Vertex_motion<Vertex_handle> mo{r.boundary.empty() ? Vertex_kind::interior : Vertex_kind::surface, {}, {}};
-        if(mo.kind != Vertex_kind::interior && !boundary_moves) mo.kind = Vertex_kind::fixed;
+        // A facet whose three vertices are fixed lies where nothing may move (a crack
+        // face, a surface embedded in one subdomain): its new vertex stays where it is.
+        bool pinned = !r.boundary.empty();
+        for(Vertex_handle x : fv) pinned = pinned && motion_of(x).kind == Vertex_kind::fixed;
+        if(pinned || (mo.kind != Vertex_kind::interior && !boundary_moves)) mo.kind = Vertex_kind::fixed;
         fresh[r.vertex] = mo;
         records.push_back(std::move(r));
         done = true;

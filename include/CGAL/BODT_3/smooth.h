@@ -7,11 +7,15 @@
 #include <CGAL/BODT_3/Mesh_labels.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/Tet_mesh_constraints.h>
 #include <CGAL/BODT_3/Triangulation_view.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/optimize_mesh.h>
 
+#include <algorithm>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace BODT_3 {
@@ -43,13 +47,65 @@ smooth(Tr& tr, const Smoothing_options& options, Visitor&& visitor = Visitor())
   return optimize_mesh(labels, Classify_by_hints{none}, options, visitor);
 }
 
+namespace internal {
+
+// Sheets enter the complex with their label, so that flips keep them (flips change
+// a facet of the complex only for a coplanar one of the same patch, and these
+// have no such neighbour across their rim); crack edges become curves, so that no
+// flip changes a side of the crack. Neither is written back as such: the file's
+// own triangles and edges are.
+inline void add_constraints_to_complex(const Tet_mesh& tm, const Tet_mesh_constraints& constraints,
+                                       const std::vector<Tet_mesh_c3t3::Vertex_handle>& handles, Tet_mesh_c3t3& c3t3)
+{
+  auto& tds = c3t3.triangulation().tds();
+  for(std::size_t f : constraints.sheets)
+  {
+    const auto& t = tm.triangles[f];
+    Tet_mesh_c3t3::Cell_handle c;
+    int i, j, k;
+    if(!tds.is_facet(handles[t[0]], handles[t[1]], handles[t[2]], c, i, j, k)) continue;
+    c3t3.add_to_complex(c, 6 - i - j - k, tm.triangle_labels[f]);
+    for(int v : t) c3t3.set_dimension(handles[v], 2);
+  }
+  int curve = 1;
+  for(int l : tm.edge_labels) curve = (std::max)(curve, l + 1);
+  for(const auto& e : constraints.crack_edges)
+    if(!c3t3.is_in_complex(handles[e[0]], handles[e[1]])) c3t3.add_to_complex(handles[e[0]], handles[e[1]], curve);
+}
+
+// Adds what the constraints pinned to the classification the visitor is shown.
+template <class Visitor>
+struct Constraint_counting_visitor
+{
+  Visitor& visitor;
+  const Tet_mesh_constraints& constraints;
+
+  void fill(Smoothing_result& r) const
+  {
+    r.crack_vertices = constraints.crack_vertices;
+    r.embedded_triangles = constraints.embedded_triangles;
+  }
+  void after_classification(const Smoothing_result& r)
+  {
+    Smoothing_result copy = r;
+    fill(copy);
+    visitor.after_classification(copy);
+  }
+  void after_iteration(const Iteration_stats& s) { visitor.after_iteration(s); }
+};
+
+} // namespace internal
+
 /// The pipeline on a mesh read from a file. Tetrahedra labelled 0 are outside the
 /// mesh (unless all are), but stay valid; `Edges`, `Corners`, `RequiredVertices`
 /// and triangle labels give the features, and tensor voting is used when none is
-/// given. The mesh becomes a `Tet_mesh_c3t3` (tet_mesh_to_c3t3), goes through the
-/// same pipeline, and comes back with `update_tet_mesh`. Its infinite cells only
-/// close the mesh, so its boundary need not stay convex where it is. Throws `Mesh_io_error` for
-/// a mesh no triangulation can hold.
+/// given. Without `Ridges`, edges labelled 0 are not features when other edges
+/// are labelled (TetGen's `-e` lists every edge of the mesh, those on its segments
+/// with their marker, the others with 0). Embedded surfaces and cracks are kept
+/// (`Tet_mesh_constraints`). The mesh becomes a `Tet_mesh_c3t3` (tet_mesh_to_c3t3),
+/// goes through the same pipeline, and comes back with `update_tet_mesh`. Its
+/// infinite cells only close the mesh, so its boundary need not stay convex where
+/// it is. Throws `Mesh_io_error` for a mesh no triangulation can hold.
 template <class Visitor = Null_smoothing_visitor>
 Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
@@ -63,15 +119,25 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   for(std::size_t t = 0; t < tm.tets.size(); ++t) flat.in_mesh[t] = tm.in_mesh(t, all_zero) ? 1 : 0;
   flat.subdomain = tm.tet_labels;
   flat.build_incidences();
+  Tet_mesh_constraints constraints = find_constraints(tm, flat);
+  flat.subdomain = constraints.subdomain;
+
   Feature_hints hints;
-  hints.feature_edges = tm.edges;
+  const bool some_labelled = std::any_of(tm.edge_labels.begin(), tm.edge_labels.end(), [](int l) { return l != 0; });
+  for(std::size_t e = 0; e < tm.edges.size(); ++e)
+    if(!tm.ridges.empty() || !some_labelled || tm.edge_labels[e] != 0) hints.feature_edges.push_back(tm.edges[e]);
   hints.corners = tm.corners;
   hints.corners.insert(hints.corners.end(), tm.required_vertices.begin(), tm.required_vertices.end());
   for(std::size_t f = 0; f < tm.triangles.size(); ++f) hints.facet_patches.push_back({tm.triangles[f], tm.triangle_labels[f]});
 
   Tet_mesh_c3t3 c3t3;
   std::vector<Tet_mesh_c3t3::Vertex_handle> handles;
+  // The complex is built with the working labels; the file's come back at the end.
+  if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
   tet_mesh_to_c3t3(tm, c3t3, std::string(), &handles);
+  if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
+  internal::add_constraints_to_complex(tm, constraints, handles, c3t3);
+
   C3t3_labels<Tet_mesh_c3t3> labels(c3t3, false);
   auto classify = [&](const auto& view, const Classification_options& opt) {
     const Vertex_classification by_file = classify_vertices(flat, hints, opt);
@@ -82,7 +148,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
     cls.non_manifold = by_file.non_manifold;
     for(std::size_t i = 0; i < handles.size(); ++i)
     {
-      if(handles[i] == Tet_mesh_c3t3::Vertex_handle()) continue;
+      if(handles[i] == Tet_mesh_c3t3::Vertex_handle() || constraints.pinned[i]) continue;
       const int v = view.index(handles[i]);
       cls.kind[v] = by_file.kind[i];
       for(int k = 0; k < 2; ++k)
@@ -93,8 +159,15 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
     }
     return cls;
   };
-  const Smoothing_result r = optimize_mesh(labels, classify, options, visitor);
+  internal::Constraint_counting_visitor<Visitor> counting{visitor, constraints};
+  Smoothing_result r = optimize_mesh(labels, classify, options, counting);
+  counting.fill(r);
   update_tet_mesh(tm, c3t3, handles);
+  for(int& l : tm.tet_labels)
+  {
+    const auto it = constraints.file_label.find(l);
+    if(it != constraints.file_label.end()) l = it->second;
+  }
   return r;
 }
 

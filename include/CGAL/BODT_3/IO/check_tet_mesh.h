@@ -55,10 +55,10 @@ inline std::string tet_to_string(const std::array<int, 4>& t)
 /// orientation positive. Throws `Mesh_io_error` naming the file and line of the
 /// first offending entity. Checked: finite coordinates, indices in range, no
 /// tetrahedron using a vertex twice, no repeated tetrahedron, no face shared by
-/// three or more tetrahedra, one orientation for all non-flat tetrahedra. When every
-/// non-flat tetrahedron is negatively oriented (some meshers write them so), all are
-/// reoriented and a warning goes to `warnings`. Flat tetrahedra are kept: quality
-/// reports count them.
+/// three or more tetrahedra, no flat tetrahedron (whatever its label: label 0 cells
+/// close a mesh and must stay valid too), one orientation for all tetrahedra. When
+/// every tetrahedron is negatively oriented (some meshers write them so), all are
+/// reoriented and a warning goes to `warnings`.
 inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::ostream& warnings)
 {
   const std::string& file = src.file;
@@ -218,6 +218,11 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
                                                   mesh.points[c[2]], mesh.points[c[3]]);
     if(o == CGAL::POSITIVE) { if(positive++ == 0) first_positive = t; }
     else if(o == CGAL::NEGATIVE) { if(negative++ == 0) first_negative = t; }
+    else
+      throw Mesh_io_error(file, src.tet_line(t),
+                          "tetrahedron " + std::to_string(t + 1) + " (" + internal::tet_to_string(c) +
+                              ") is flat: its four vertices are coplanar (exact predicate), so it has no "
+                              "volume; every tetrahedron, labelled 0 or not, must have one");
   }
   if(positive > 0 && negative > 0)
   {

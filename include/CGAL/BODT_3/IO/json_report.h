@@ -104,7 +104,9 @@ inline void to_json(nlohmann::json& j, const Smoothing_result& r)
                        {"feature", r.feature_vertices},
                        {"fixed", r.fixed_vertices},
                        {"non_manifold", r.non_manifold_vertices},
+                       {"on_cracks", r.crack_vertices},
                        {"tensor_voting", r.used_tensor_voting}}},
+                     {"embedded_triangles", r.embedded_triangles},
                      {"topology", r.topology},
                      {"insertion", r.insertion},
                      {"seconds", r.seconds}};
