@@ -106,7 +106,7 @@ const Variant variants[] = {{"B-ODT, no flips", BODT::Moving_vertices::ALL, fals
 
 BODT::Flip_options flip_options;
 std::size_t worst_listed = 0;
-int threads = 0;
+int threads = 1;   // the tables compare stages on one thread; --threads 0: every core
 
 // The worst tetrahedra of a C3T3's complex: angles, shape, faces and vertices on the boundary.
 template <class C3T3>

@@ -90,6 +90,7 @@ Run smooth_ours(Mesh& mesh, std::size_t iterations, const Ours& how)
           options.vertex_insertion = how.insertion;
           options.smoothing_method = how.method;
           if(!how.max_min) options.max_min_threshold = 0;
+          options.threads = 1;   // CPU seconds against CGAL's sequential optimizers
           const auto r = BODT::smooth(m, options, Iteration_counter{&done});
           flips = r.topology;
           return r.code;
@@ -114,6 +115,7 @@ Run smooth_ours(Mesh& mesh, std::size_t iterations, const Ours& how)
                                             CGAL::parameters::vertex_insertion = how.insertion,
                                             CGAL::parameters::smoothing_method = how.method,
                                             CGAL::parameters::max_min_threshold = how.max_min ? BODT::Smoothing_options().max_min_threshold : 0.,
+                                            CGAL::parameters::number_of_threads = 1,
                                             CGAL::parameters::progress_visitor = Counting{&done, &flips});
         }
       },

@@ -410,7 +410,8 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
      << "| CPU | " << c.machine.cpu << " |\n| cores | " << c.machine.cores << " |\n| compiler | "
      << c.machine.compiler << " |\n| CGAL | " << c.machine.cgal << " |\n| date | " << c.machine.date << " |\n"
      << "| iterations | " << c.iterations << " for every iterative method |\n\n"
-     << "Times are CPU (user) seconds of the process in the method's call, one core; the machine may have "
+     << "Times are CPU (user) seconds of the process in the method's call, one core (ours with "
+     << "`number_of_threads = 1`, as CGAL's sequential optimizers); the machine may have "
      << "been shared, so compare times as ratios within this file. Throughput is the input's tetrahedra times "
      << "the iterations run, per CPU second.\n\n";
 
