@@ -20,7 +20,7 @@ harnesses=("$@")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=(medit meshb gmsh vtu vtk tetgen smooth)
 
 # clang and its libFuzzer/sanitizer runtimes come from Debian.
-packages=(clang libclang-rt-14-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev zlib1g-dev libboost-dev)
+packages=(clang libclang-rt-14-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev zlib1g-dev libboost-dev libtbb-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -36,7 +36,7 @@ fi
 cxx=(clang++)
 command -v ccache >/dev/null && cxx=(ccache clang++)
 flags=(-std=c++17 -g -O1 -I"$here/include" -I/usr/include/eigen3 -DNDEBUG)
-libs=(-lgmp -lmpfr -lz)
+libs=(-lgmp -lmpfr -lz -ltbb)
 mkdir -p "$out"
 
 # Seeds: a generated grid and a piece of CGAL's Mesh_3-made sphere (from libcgal-demo, unpacked by setup.sh).
