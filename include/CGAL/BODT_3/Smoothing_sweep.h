@@ -116,14 +116,7 @@ public:
       const Vertex_kind kind = cls_.kind[v];
       if(kind == Vertex_kind::fixed) continue;
       mesh_.gather_star(v, star);
-      Vector direction(0, 0, 0);
-      if(kind == Vertex_kind::feature)
-      {
-        const auto& nb = cls_.curve_neighbors[v];
-        direction = nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]]
-                               : tensor_vote(star, opt_.tensor_voting).direction;
-      }
-      const int n = mover_.free_directions(star, kind, direction, dirs);
+      const int n = mover_.free_directions(star, kind, feature_direction(v, star), dirs);
       if(n == 0) continue;
       double shortest = std::numeric_limits<double>::infinity();
       for(const auto& c : star.cells)
@@ -209,6 +202,16 @@ private:
     dependent_begin_[nv] = static_cast<int>(dependents_.size());
   }
 
+  // The direction of the curve through a feature vertex: the chord of its two
+  // curve neighbours, or tensor voting's where the curve is not known (zero for
+  // other vertices). The neighbours share a cell with it (the colouring relies on it).
+  Vector feature_direction(int v, const Vertex_star<K>& star) const
+  {
+    if(cls_.kind[v] != Vertex_kind::feature) return Vector(0, 0, 0);
+    const auto& nb = cls_.curve_neighbors[v];
+    return nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]] : tensor_vote(star, opt_.tensor_voting).direction;
+  }
+
   // What one thread keeps: its scratch space and its counts of the sweep.
   struct Worker
   {
@@ -227,15 +230,8 @@ private:
     Iteration_stats& stats = w.counts;
     const Vertex_kind kind = cls_.kind[v];
     mesh_.gather_star(v, star);
-    Vector direction(0, 0, 0);
-    if(kind == Vertex_kind::feature)
-    {
-      const auto& nb = cls_.curve_neighbors[v];
-      direction = nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]]
-                             : tensor_vote(star, opt_.tensor_voting).direction;
-    }
     const bool natural = projection_ && kind == Vertex_kind::surface;
-    const Vector X = natural ? Nodt_move()(star) : mover_(star, kind, direction);
+    const Vector X = natural ? Nodt_move()(star) : mover_(star, kind, feature_direction(v, star));
     if(X == CGAL::NULL_VECTOR) return;
     const double fraction = natural ? guard_.move(v, X, *projection_, w.trial) : guard_.move(v, X, w.trial);
     if(fraction == 0)
