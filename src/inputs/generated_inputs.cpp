@@ -232,11 +232,16 @@ std::vector<Polyline> feature_polylines(Shape shape)
   return polylines;
 }
 
-Generated_mesh make_input(Shape shape, Size size)
+Generated_mesh make_input(Shape shape, Size size, double refinement)
 {
   std::shared_ptr<Mesh_domain> domain = make_domain(shape);
+  Sizing s = sizing(shape, size);
+  s.edge_size /= refinement;
+  s.facet_size /= refinement;
+  s.facet_distance /= refinement * refinement;
+  s.cell_size /= refinement;
   return Generated_mesh{name(shape), domain,
-                        CGAL::make_mesh_3<C3t3>(*domain, criteria(sizing(shape, size)),
+                        CGAL::make_mesh_3<C3t3>(*domain, criteria(s),
                                                 params::no_perturb(),
                                                 params::no_exude())};
 }

@@ -58,7 +58,9 @@ struct Generated_mesh
 };
 
 /// Meshes `shape` at `size` with make_mesh_3. Same arguments, same mesh.
-Generated_mesh make_input(Shape shape, Size size);
+/// `refinement` divides the size criteria (and the facet distance by its square),
+/// so that the mesh has about `refinement`^3 times as many cells (scale benchmark).
+Generated_mesh make_input(Shape shape, Size size, double refinement = 1.0);
 
 /// The feature polylines given to Mesh_3 for `shape` (empty for smooth shapes);
 /// for the sharp part they are exact straight edges.

@@ -163,6 +163,18 @@ struct Iteration_stats
   double seconds = 0;                 // since the start of the smoothing
 };
 
+/// Where the time of a run went, wall seconds per phase.
+struct Phase_seconds
+{
+  double conversion = 0;   // mesh arrays to triangulation and back (smoothing a `Tet_mesh` only)
+  double setup = 0;        // flat view, classification, sweep set-up
+  double sweeps = 0;
+  double flips = 0;
+  double max_min = 0;      // max-min steps
+  double insertion = 0;
+  double reread = 0;       // the flat view re-read after a connectivity change
+};
+
 /// The outcome of a smoothing run.
 struct Smoothing_result
 {
@@ -179,6 +191,7 @@ struct Smoothing_result
   bool used_tensor_voting = false;
   Topology_stats topology;            // summed over the iterations
   Insertion_stats insertion;          // summed over the iterations
+  Phase_seconds phases;
   double seconds = 0;
 };
 

@@ -63,6 +63,13 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   if(opt.moving_vertices == Moving_vertices::NONE) std::fill(cls.kind.begin(), cls.kind.end(), Vertex_kind::fixed);
 
   Smoothing_result result;
+  // Adds the time since the last call to `phase`.
+  double lap = 0;
+  auto charge = [&](double& phase) {
+    const double now = timer.time();
+    phase += now - lap;
+    lap = now;
+  };
   result.interior_vertices = cls.count(Vertex_kind::interior);
   result.surface_vertices = cls.count(Vertex_kind::surface);
   result.feature_vertices = cls.count(Vertex_kind::feature);
@@ -137,12 +144,14 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     changed_at.resize(mesh.number_of_vertices(), history.clock);
     for(int v : changed) changed_at[v] = history.clock;
     sweep.refresh(changed);
+    charge(result.phases.reread);
   };
 
   const bool unlimited = opt.max_iteration_number == 0;
   const std::size_t last = unlimited ? unlimited_iteration_cap : opt.max_iteration_number;
   const double convergence = unlimited && opt.convergence == 0 ? unlimited_convergence : opt.convergence;
   result.code = MAX_ITERATION_NUMBER_REACHED;
+  charge(result.phases.setup);
   for(std::size_t it = 1; it <= last; ++it)
   {
     Iteration_stats stats;
@@ -156,6 +165,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       ++history.clock;
       for(int v : sweep.moved()) changed_at[v] = history.clock;
       stats.sweep_seconds = timer.time() - start;
+      charge(result.phases.sweeps);
     }
     if(opt.topology_optimization)
     {
@@ -173,6 +183,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
             candidates.push_back(view.cells()[c]);
       stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure,
                                  known ? &candidates : nullptr);
+      charge(result.phases.flips);
       if(stats.topology.total() > 0) reread();
     }
     if(opt.moving_vertices != Moving_vertices::NONE && opt.max_min_threshold > 0)
@@ -183,6 +194,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       view.write_back();
       ++history.clock;
       for(int v : sweep.moved()) changed_at[v] = history.clock;
+      charge(result.phases.max_min);
     }
     if(budget > 0)
     {
@@ -196,6 +208,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
                                        touched, &insertion_history);
       budget -= stats.insertion.vertices_added;
       history.clock = insertion_history.clock;
+      charge(result.phases.insertion);
       if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread();
     }
     result.topology += stats.topology;

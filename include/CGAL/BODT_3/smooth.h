@@ -12,6 +12,8 @@
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/optimize_mesh.h>
 
+#include <CGAL/Real_timer.h>
+
 #include <algorithm>
 #include <string>
 #include <type_traits>
@@ -110,6 +112,8 @@ template <class Visitor = Null_smoothing_visitor>
 Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
   using K = Tet_mesh::Kernel;
+  CGAL::Real_timer timer;
+  timer.start();
   // The classification reads the file's own feature information.
   Smoothing_mesh<K> flat;
   flat.points = tm.points;
@@ -160,14 +164,17 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
     return cls;
   };
   internal::Constraint_counting_visitor<Visitor> counting{visitor, constraints};
+  const double conversion = timer.time();
   Smoothing_result r = optimize_mesh(labels, classify, options, counting);
   counting.fill(r);
+  const double back = timer.time();
   update_tet_mesh(tm, c3t3, handles);
   for(int& l : tm.tet_labels)
   {
     const auto it = constraints.file_label.find(l);
     if(it != constraints.file_label.end()) l = it->second;
   }
+  r.phases.conversion = conversion + timer.time() - back;
   return r;
 }
 

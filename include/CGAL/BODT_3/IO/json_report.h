@@ -93,6 +93,13 @@ inline void to_json(nlohmann::json& j, const Iteration_stats& s)
                      {"seconds", s.seconds}};
 }
 
+inline void to_json(nlohmann::json& j, const Phase_seconds& p)
+{
+  j = nlohmann::json{{"conversion", p.conversion}, {"setup", p.setup},     {"sweeps", p.sweeps},
+                     {"flips", p.flips},           {"max_min", p.max_min}, {"insertion", p.insertion},
+                     {"reread", p.reread}};
+}
+
 inline void to_json(nlohmann::json& j, const Smoothing_result& r)
 {
   j = nlohmann::json{{"return_code", to_string(r.code)},
@@ -109,6 +116,7 @@ inline void to_json(nlohmann::json& j, const Smoothing_result& r)
                      {"embedded_triangles", r.embedded_triangles},
                      {"topology", r.topology},
                      {"insertion", r.insertion},
+                     {"phase_seconds", r.phases},
                      {"seconds", r.seconds}};
 }
 
