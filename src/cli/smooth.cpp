@@ -101,7 +101,9 @@ int run_smooth(Smooth_options o)
   BODT::Tet_mesh mesh = BODT::IO::read_mesh(o.input, input_format, o.quiet ? silenced : std::cerr);
   const double read_seconds = lap();
   const BODT::IO::Mesh_file_format output_format = format.resolve(o.output, input_format);
-  const BODT::Quality_report before = BODT::mesh_quality(mesh);
+  BODT::Quality_options measures;
+  measures.threads = opt.threads;
+  const BODT::Quality_report before = BODT::mesh_quality(mesh, measures);
   double quality_seconds = lap();
   if(before.inverted_tets > 0)
     throw std::runtime_error(o.input + ": " + std::to_string(before.inverted_tets) +
@@ -110,7 +112,7 @@ int run_smooth(Smooth_options o)
   const BODT::Smoothing_result result = BODT::smooth(mesh, opt, progress);
   progress.finish();
   const double smoothing_seconds = lap();
-  const BODT::Quality_report after = BODT::mesh_quality(mesh);
+  const BODT::Quality_report after = BODT::mesh_quality(mesh, measures);
   quality_seconds += lap();
 
   // The reports are made in memory and staged, so that a failure writing the mesh leaves no report.

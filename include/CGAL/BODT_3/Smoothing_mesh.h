@@ -4,10 +4,10 @@
 #define CGAL_BODT_3_SMOOTHING_MESH_H
 
 #include <CGAL/BODT_3/Vertex_star.h>
+#include <CGAL/BODT_3/tet_face_matching.h>
 
 #include <algorithm>
 #include <array>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -168,24 +168,9 @@ private:
   // Cell adjacency through shared facets.
   void find_neighbors()
   {
-    neighbor.assign(4 * cells.size(), -1);
-    std::unordered_map<std::array<int, 3>, int, internal::Facet_key_hash> open;
-    open.reserve(2 * cells.size());
-    for(int c = 0; c < static_cast<int>(cells.size()); ++c)
-      for(int i = 0; i < 4; ++i)
-      {
-        const auto& o = internal::kOpposite[i];
-        const auto key = internal::sorted({cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]});
-        auto it = open.find(key);
-        if(it == open.end())
-          open.emplace(key, 4 * c + i);
-        else
-        {
-          neighbor[4 * c + i] = it->second / 4;
-          neighbor[it->second] = c;
-          open.erase(it);
-        }
-      }
+    const Tet_face_matching faces(cells, points.size());
+    neighbor.resize(faces.match.size());
+    for(std::size_t f = 0; f < faces.match.size(); ++f) neighbor[f] = faces.match[f] < 0 ? -1 : faces.match[f] / 4;
   }
 };
 

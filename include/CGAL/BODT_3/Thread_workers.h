@@ -34,9 +34,10 @@ public:
 
   int threads() const { return threads_; }
 
-  /// Calls f(worker, i) for every i in [begin, end), and returns when all are done.
+  /// Calls f(worker, i) for every i in [begin, end), and returns when all are done;
+  /// `grain`: iterations per task (the default suits a vertex move, a few microseconds).
   template <class F>
-  void for_each(int begin, int end, const F& f)
+  void for_each(int begin, int end, const F& f, int grain = 32)
   {
     if(begin >= end) return;
     arena_.execute([&] {
@@ -55,8 +56,6 @@ public:
   }
 
 private:
-  static constexpr int grain = 32;   // vertices per task: a move costs a few microseconds
-
   int threads_;
   tbb::task_arena arena_;
   tbb::enumerable_thread_specific<Worker> workers_;

@@ -4,7 +4,9 @@
 #define CGAL_BODT_3_MESH_QUALITY_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/dihedral_angles.h>
+#include <CGAL/BODT_3/tet_face_matching.h>
 #include <CGAL/BODT_3/tet_quality.h>
 
 #include <CGAL/Kernel/global_functions.h>
@@ -29,6 +31,7 @@ struct Quality_options
   int histogram_bins = 36;          // bins of equal width over [0, 180] degrees
   double small_angle = 10.0;        // a tetrahedron with a dihedral angle below this is counted
   double large_angle = 170.0;       // ... and one with an angle above this
+  int threads = 0;                  // threads measuring a Tet_mesh (0: every core); the report does not depend on it
 };
 
 /// Dihedral-angle quality of a tetrahedral mesh, the same measures for every
@@ -107,6 +110,25 @@ public:
     ++r_.num_tets;
   }
 
+  /// Adds what `o` accumulated, as if its tetrahedra came after this one's.
+  void merge(const Quality_accumulator& o)
+  {
+    for(std::size_t b = 0; b < r_.histogram.size(); ++b) r_.histogram[b] += o.r_.histogram[b];
+    r_.min_dihedral_deg = std::min(r_.min_dihedral_deg, o.r_.min_dihedral_deg);
+    r_.max_dihedral_deg = std::max(r_.max_dihedral_deg, o.r_.max_dihedral_deg);
+    r_.tets_below_small += o.r_.tets_below_small;
+    r_.tets_above_large += o.r_.tets_above_large;
+    r_.bad_tets_interior += o.r_.bad_tets_interior;
+    r_.bad_tets_touching_boundary += o.r_.bad_tets_touching_boundary;
+    r_.bad_tets_all_vertices_on_boundary += o.r_.bad_tets_all_vertices_on_boundary;
+    r_.min_radius_ratio = std::min(r_.min_radius_ratio, o.r_.min_radius_ratio);
+    rr_sum_ += o.rr_sum_;
+    r_.volume += o.r_.volume;
+    for(const auto& kv : o.r_.volume_per_subdomain) r_.volume_per_subdomain[kv.first] += kv.second;
+    r_.inverted_tets += o.r_.inverted_tets;
+    r_.num_tets += o.r_.num_tets;
+  }
+
   Quality_report result(std::size_t num_vertices) const
   {
     Quality_report r = r_;
@@ -129,40 +151,47 @@ private:
 /// label is 0. Vertices are counted when a measured tetrahedron uses them.
 inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& opt = Quality_options())
 {
-  Quality_accumulator acc(opt);
   const bool all_zero = mesh.all_labels_zero();
+  std::vector<std::size_t> measured;   // the tetrahedra in the mesh
+  for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+    if(mesh.in_mesh(t, all_zero)) measured.push_back(t);
   std::vector<char> used(mesh.points.size(), 0);
   // A face is on the boundary or an interface unless two mesh tets of one label share it.
   std::vector<char> on_boundary(mesh.points.size(), 0);
   {
-    std::map<std::array<int, 3>, std::pair<int, int>> faces;   // sorted face -> (count, label)
-    for(std::size_t t = 0; t < mesh.tets.size(); ++t)
-    {
-      if(!mesh.in_mesh(t, all_zero)) continue;
-      const auto& c = mesh.tets[t];
+    std::vector<std::array<int, 4>> cells;
+    cells.reserve(measured.size());
+    for(std::size_t t : measured) cells.push_back(mesh.tets[t]);
+    const Tet_face_matching faces(cells, mesh.points.size());
+    for(std::size_t c = 0; c < cells.size(); ++c)
       for(int i = 0; i < 4; ++i)
       {
-        std::array<int, 3> f = {c[(i + 1) % 4], c[(i + 2) % 4], c[(i + 3) % 4]};
-        std::sort(f.begin(), f.end());
-        auto ins = faces.emplace(f, std::make_pair(1, mesh.tet_labels[t]));
-        if(!ins.second)
-        {
-          ins.first->second.first += ins.first->second.second == mesh.tet_labels[t] ? 1 : 2;
-        }
+        const int m = faces.match[4 * c + static_cast<std::size_t>(i)];
+        if(m >= 0 && mesh.tet_labels[measured[static_cast<std::size_t>(m / 4)]] == mesh.tet_labels[measured[c]])
+          continue;
+        for(int k = 1; k < 4; ++k) on_boundary[static_cast<std::size_t>(cells[c][(i + k) & 3])] = 1;
       }
+  }
+  for(std::size_t t : measured)
+    for(int v : mesh.tets[t]) used[static_cast<std::size_t>(v)] = 1;
+  // Blocks of a fixed size, merged in order: the sums do not depend on the threads.
+  constexpr std::size_t block = 1 << 14;
+  const int blocks = static_cast<int>((measured.size() + block - 1) / block);
+  std::vector<Quality_accumulator> parts(static_cast<std::size_t>(blocks), Quality_accumulator(opt));
+  Thread_workers<char> workers(opt.threads);
+  workers.for_each(0, blocks, [&](char&, int b) {
+    Quality_accumulator& acc = parts[static_cast<std::size_t>(b)];
+    const std::size_t end = std::min(measured.size(), (static_cast<std::size_t>(b) + 1) * block);
+    for(std::size_t k = static_cast<std::size_t>(b) * block; k < end; ++k)
+    {
+      const std::size_t t = measured[k];
+      const auto& c = mesh.tets[t];
+      acc.add(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]], mesh.tet_labels[t],
+              on_boundary[c[0]] + on_boundary[c[1]] + on_boundary[c[2]] + on_boundary[c[3]]);
     }
-    for(const auto& f : faces)
-      if(f.second.first != 2)
-        for(int v : f.first) on_boundary[v] = 1;
-  }
-  for(std::size_t t = 0; t < mesh.tets.size(); ++t)
-  {
-    if(!mesh.in_mesh(t, all_zero)) continue;
-    const auto& c = mesh.tets[t];
-    acc.add(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]], mesh.tet_labels[t],
-            on_boundary[c[0]] + on_boundary[c[1]] + on_boundary[c[2]] + on_boundary[c[3]]);
-    for(int v : c) used[v] = 1;
-  }
+  }, 1);
+  Quality_accumulator acc(opt);
+  for(const Quality_accumulator& part : parts) acc.merge(part);
   return acc.result(static_cast<std::size_t>(std::count(used.begin(), used.end(), 1)));
 }
 

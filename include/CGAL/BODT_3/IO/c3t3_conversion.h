@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_IO_C3T3_CONVERSION_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/tet_face_matching.h>
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
 #include <CGAL/BODT_3/IO/check_tet_mesh.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
@@ -200,15 +201,13 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
   }
 
   // Finite cells, glued along the faces they share.
-  struct Face_side
+  const Tet_face_matching faces(mesh.tets, mesh.points.size());
+  if(faces.crowded_face >= 0)
   {
-    Cell_handle cell;
-    int index;
-    std::size_t tet;
-    int count;
-  };
-  std::unordered_map<std::array<int, 3>, Face_side, internal::Sorted_triple_hash> faces;
-  faces.reserve(2 * nt + 16);
+    const auto t = static_cast<std::size_t>(faces.crowded_face / 4);
+    fail("face (" + face_to_string(oriented_face(mesh.tets[t], static_cast<int>(faces.crowded_face % 4))) +
+         ") belongs to three or more tetrahedra");
+  }
   std::vector<Cell_handle> cells(nt);
   for(std::size_t t = 0; t < nt; ++t)
   {
@@ -219,16 +218,14 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
       if(vh[q[k]]->cell() == Cell_handle()) vh[q[k]]->set_cell(c);
     for(int i = 0; i < 4; ++i)
     {
+      const int m = faces.match[4 * t + static_cast<std::size_t>(i)];
+      const auto other = static_cast<std::size_t>(m / 4);
+      if(m < 0 || other > t) continue;
       const std::array<int, 3> f = oriented_face(q, i);
-      auto ins = faces.emplace(sorted(f), Face_side{c, i, t, 1});
-      if(ins.second) continue;
-      Face_side& other = ins.first->second;
-      if(++other.count > 2)
-        fail("face (" + face_to_string(f) + ") belongs to three or more tetrahedra");
-      if(smallest_first(f) == smallest_first(oriented_face(mesh.tets[other.tet], other.index)))
-        fail("tetrahedra " + std::to_string(other.tet + 1) + " and " + std::to_string(t + 1) +
+      if(smallest_first(f) == smallest_first(oriented_face(mesh.tets[other], m % 4)))
+        fail("tetrahedra " + std::to_string(other + 1) + " and " + std::to_string(t + 1) +
              " lie on the same side of their common face (" + face_to_string(f) + ")");
-      tds.set_adjacency(c, i, other.cell, other.index);
+      tds.set_adjacency(c, i, cells[other], m % 4);
     }
   }
 
