@@ -54,6 +54,9 @@ struct Vertex_motion
 /// (`compare_worst_first`), and stay within `bounds`; otherwise it is undone.
 /// At most `budget` vertices are added.
 ///
+/// `seeds`, when given, holds every mesh cell below the threshold (the quality
+/// guard knows them), so that the pass does not measure every cell again.
+///
 /// `motion(v)` tells how an existing vertex moves; `boundary_moves` says whether
 /// boundary vertices may move at all (not for the interior-only ODT baseline).
 /// `added` receives the new vertices, `touched` the vertices whose star changed.
@@ -62,7 +65,8 @@ Insertion_stats insertion_pass(Labels& labels, const Insertion_options& opt, con
                                Quality_measure measure, const Tensor_voting_options& voting, std::size_t budget,
                                bool boundary_moves, const Motion& motion, const Vertex_id& vertex_id,
                                std::vector<Added_vertex<typename Labels::Vertex_handle>>& added,
-                               std::vector<typename Labels::Vertex_handle>& touched, Flip_history* history = nullptr)
+                               std::vector<typename Labels::Vertex_handle>& touched, Flip_history* history = nullptr,
+                               const std::vector<typename Labels::Cell_handle>* seeds = nullptr)
 {
   using Vertex_handle = typename Labels::Vertex_handle;
   using Cell_handle = typename Labels::Cell_handle;
@@ -94,17 +98,20 @@ Insertion_stats insertion_pass(Labels& labels, const Insertion_options& opt, con
     }
   };
   std::vector<Entry> candidates;
-  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
-  {
-    if(labels.region(c).kind != Region_kind::mesh) continue;
+  auto consider = [&](Cell_handle c) {
+    if(labels.region(c).kind != Region_kind::mesh) return;
     const double sine = min_dihedral_sine(point(c->vertex(0)), point(c->vertex(1)), point(c->vertex(2)),
                                           point(c->vertex(3)));
-    if(!(sine < opt.quality_threshold)) continue;
+    if(!(sine < opt.quality_threshold)) return;
     Entry e{quality(c), {}, c, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
     for(int k = 0; k < 4; ++k) e.ids[k] = vertex_id(e.vertices[k]);
     std::sort(e.ids.begin(), e.ids.end());
     candidates.push_back(e);
-  }
+  };
+  if(seeds)
+    for(Cell_handle c : *seeds) consider(c);
+  else
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) consider(c);
   std::sort(candidates.begin(), candidates.end(), [](const Entry& a, const Entry& b) { return b < a; });
 
   Local_smoothing<Labels> smoother(labels, bounds, measure, voting);

@@ -33,6 +33,16 @@ struct Classify_by_hints
   }
 };
 
+/// How the vertices are classified for a run with options `opt`.
+inline Classification_options classification_options(const Smoothing_options& opt)
+{
+  Classification_options copt;
+  copt.move_boundary = opt.moving_vertices == Moving_vertices::ALL;
+  copt.preserve_features = opt.preserve_features;
+  copt.tensor_voting = opt.tensor_voting;
+  return copt;
+}
+
 /// The pipeline of the paper's Fig. 1 on the triangulation behind `labels`
 /// (Mesh_labels.h): the vertices are classified once (`classify(view, options)`
 /// gives a `Vertex_classification` by view id), then each iteration runs a
@@ -55,11 +65,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   Triangulation_view<Labels> view(labels);
   auto& mesh = view.mesh();
 
-  Classification_options copt;
-  copt.move_boundary = opt.moving_vertices == Moving_vertices::ALL;
-  copt.preserve_features = opt.preserve_features;
-  copt.tensor_voting = opt.tensor_voting;
-  Vertex_classification cls = classify(view, copt);
+  Vertex_classification cls = classify(view, classification_options(opt));
   if(opt.moving_vertices == Moving_vertices::NONE) std::fill(cls.kind.begin(), cls.kind.end(), Vertex_kind::fixed);
 
   Smoothing_result result;
@@ -147,6 +153,15 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     charge(result.phases.reread);
   };
 
+  // With the guard on, the sweep knows every mesh cell's minimum dihedral sine:
+  // the passes start from the cells below their thresholds.
+  const bool guard_knows = opt.quality_guard && opt.quality_measure == Quality_measure::min_dihedral_sine;
+  auto cells_below = [&](double threshold) {
+    candidates.clear();
+    for(std::size_t c = 0; c < mesh.cells.size(); ++c)
+      if(mesh.in_mesh[c] && sweep.cell_quality(static_cast<int>(c)) < threshold) candidates.push_back(view.cells()[c]);
+  };
+
   const bool unlimited = opt.max_iteration_number == 0;
   const std::size_t last = unlimited ? unlimited_iteration_cap : opt.max_iteration_number;
   const double convergence = unlimited && opt.convergence == 0 ? unlimited_convergence : opt.convergence;
@@ -174,13 +189,8 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       touched.clear();
       added.clear();
       // The guard already knows every mesh cell's quality: start from the bad ones.
-      const bool known = opt.quality_guard && opt.quality_measure == Quality_measure::min_dihedral_sine &&
-                         !opt.flips.flip_outside;
-      candidates.clear();
-      if(known)
-        for(std::size_t c = 0; c < mesh.cells.size(); ++c)
-          if(mesh.in_mesh[c] && sweep.cell_quality(static_cast<int>(c)) < opt.flips.quality_threshold)
-            candidates.push_back(view.cells()[c]);
+      const bool known = guard_knows && !opt.flips.flip_outside;
+      if(known) cells_below(opt.flips.quality_threshold);
       stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure,
                                  known ? &candidates : nullptr);
       charge(result.phases.flips);
@@ -203,9 +213,10 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       insertion_history.pass = it;
       insertion_history.clock = history.clock;
       stamp_regions(insertion_history);
+      if(guard_knows) cells_below(opt.insertion.quality_threshold);
       stats.insertion = insertion_pass(labels, opt.insertion, bounds, opt.quality_measure, opt.tensor_voting, budget,
                                        opt.moving_vertices == Moving_vertices::ALL, motion, vertex_id, added,
-                                       touched, &insertion_history);
+                                       touched, &insertion_history, guard_knows ? &candidates : nullptr);
       budget -= stats.insertion.vertices_added;
       history.clock = insertion_history.clock;
       charge(result.phases.insertion);

@@ -134,6 +134,12 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   hints.corners.insert(hints.corners.end(), tm.required_vertices.begin(), tm.required_vertices.end());
   for(std::size_t f = 0; f < tm.triangles.size(); ++f) hints.facet_patches.push_back({tm.triangles[f], tm.triangle_labels[f]});
 
+  // Classified before the triangulation is built, so that the flat copy is gone by then.
+  const double classification_start = timer.time();
+  const Vertex_classification by_file = classify_vertices(flat, hints, classification_options(options));
+  flat = Smoothing_mesh<K>();
+  const double classification = timer.time() - classification_start;
+
   Tet_mesh_c3t3 c3t3;
   std::vector<Tet_mesh_c3t3::Vertex_handle> handles;
   // The complex is built with the working labels; the file's come back at the end.
@@ -143,8 +149,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   internal::add_constraints_to_complex(tm, constraints, handles, c3t3);
 
   C3t3_labels<Tet_mesh_c3t3> labels(c3t3, false);
-  auto classify = [&](const auto& view, const Classification_options& opt) {
-    const Vertex_classification by_file = classify_vertices(flat, hints, opt);
+  auto classify = [&](const auto& view, const Classification_options&) {
     Vertex_classification cls;
     cls.kind.assign(view.vertices().size(), Vertex_kind::fixed);
     cls.curve_neighbors.assign(view.vertices().size(), {-1, -1});
@@ -174,7 +179,8 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
     const auto it = constraints.file_label.find(l);
     if(it != constraints.file_label.end()) l = it->second;
   }
-  r.phases.conversion = conversion + timer.time() - back;
+  r.phases.conversion = conversion - classification + timer.time() - back;
+  r.phases.setup += classification;
   return r;
 }
 

@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_IO_C3T3_CONVERSION_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/Tet_mesh_cell_base_3.h>
 #include <CGAL/BODT_3/tet_face_matching.h>
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
 #include <CGAL/BODT_3/IO/check_tet_mesh.h>
@@ -474,7 +475,9 @@ struct Tet_mesh_domain_indices
   using Index = int;
   using Has_features = CGAL::Tag_true;
 };
-using Tet_mesh_triangulation = CGAL::Mesh_triangulation_3<Tet_mesh_domain_indices>::type;
+using Tet_mesh_triangulation = CGAL::Mesh_triangulation_3<
+    Tet_mesh_domain_indices, CGAL::Default, CGAL::Sequential_tag, CGAL::Default,
+    Tet_mesh_cell_base_3<CGAL::Robust_weighted_circumcenter_filtered_traits_3<Tet_mesh::Kernel>>>::type;
 using Tet_mesh_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tet_mesh_triangulation, int, int>;
 
 /// Writes back into `mesh` what a pipeline did to `c3t3`, which
