@@ -136,7 +136,8 @@ TEST(Cli, FailedRunWritesNothing)
 }
 
 // Paths with a quote and a backslash give valid JSON, which holds everything the
-// run knows: options, result totals, one record per sweep, quality before/after.
+// run knows: options, result totals, one record per sweep, quality before/after,
+// the time per phase.
 TEST(Cli, ReportIsValidJsonWithEverything)
 {
   const fs::path dir = tmp_dir();
@@ -182,6 +183,18 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   }
   EXPECT_GT(j.at("after").at("min_dihedral_deg").get<double>(), j.at("before").at("min_dihedral_deg").get<double>());
   EXPECT_LT(std::abs(j.at("max_relative_subdomain_volume_change").get<double>()), 1e-10);
+  // Where the time went: every phase counted once, none more than the whole.
+  double phases = 0;
+  for(const char* key : {"conversion", "setup", "sweeps", "flips", "max_min", "insertion", "reread"})
+  {
+    const double t = r.at("phase_seconds").at(key);
+    EXPECT_GE(t, 0.0) << key;
+    phases += t;
+  }
+  const nlohmann::json& process = j.at("process_seconds");
+  EXPECT_LE(phases, process.at("smoothing").get<double>());
+  EXPECT_GT(process.at("read").get<double>(), 0.0);
+  EXPECT_GT(process.at("quality_before_and_after").get<double>(), 0.0);
 }
 
 TEST(Cli, ZeroIterationsRunsUntilConvergence)

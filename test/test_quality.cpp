@@ -5,7 +5,11 @@
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/mesh_quality.h>
+#include <CGAL/BODT_3/tet_face_matching.h>
 #include <CGAL/BODT_3/tet_quality.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Kernel/global_functions.h>
@@ -17,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
 
 using CGAL::BODT_3::Tet_mesh;
@@ -250,4 +255,107 @@ TEST(Handle_index_map, FindsWhatWasInsertedThroughGrowth)
   map.reset(10);
   EXPECT_EQ(map.find(&storage[0]), -1);
   EXPECT_EQ(map.size(), 0u);
+}
+
+namespace {
+
+// The finite cells of a Delaunay triangulation of `n` random points in the unit
+// cube, as index arrays, with the TDS's own adjacency to compare against.
+struct Delaunay_cells
+{
+  std::vector<Point> points;
+  std::vector<std::array<int, 4>> cells;
+  std::vector<int> neighbor;   // 4 c + i: the finite cell across, or -1
+
+  explicit Delaunay_cells(int n)
+  {
+    using Dt = CGAL::Delaunay_triangulation_3<CGAL::Epick>;
+    CGAL::Random random(7);
+    std::vector<Point> in;
+    for(int i = 0; i < n; ++i) in.emplace_back(random.get_double(), random.get_double(), random.get_double());
+    Dt dt(in.begin(), in.end());
+    std::map<Dt::Vertex_handle, int> vid;
+    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+    {
+      vid[v] = static_cast<int>(points.size());
+      points.push_back(v->point());
+    }
+    std::map<Dt::Cell_handle, int> cid;
+    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+    {
+      cid[c] = static_cast<int>(cells.size());
+      cells.push_back({vid[c->vertex(0)], vid[c->vertex(1)], vid[c->vertex(2)], vid[c->vertex(3)]});
+    }
+    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        neighbor.push_back(dt.is_infinite(c->neighbor(i)) ? -1 : cid[c->neighbor(i)]);
+  }
+};
+
+} // namespace
+
+// Face matching without hashing finds exactly the triangulation's adjacency, the
+// matched face has the same three vertices, and the result does not depend on the
+// number of threads.
+TEST(Tet_face_matching, FindsTheTriangulationsAdjacencyOnAnyNumberOfThreads)
+{
+  const Delaunay_cells d(3000);
+  const CGAL::BODT_3::Tet_face_matching one(d.cells, d.points.size(), 1);
+  EXPECT_EQ(one.crowded_face, -1);
+  ASSERT_EQ(one.match.size(), 4 * d.cells.size());
+  for(std::size_t f = 0; f < one.match.size(); ++f)
+  {
+    const int m = one.match[f];
+    ASSERT_EQ(m < 0 ? -1 : m / 4, d.neighbor[f]) << "face " << f;
+    if(m < 0) continue;
+    EXPECT_EQ(one.match[static_cast<std::size_t>(m)], static_cast<int>(f));
+    // The far vertices differ; the three others are shared.
+    const auto& a = d.cells[f / 4];
+    const auto& b = d.cells[static_cast<std::size_t>(m / 4)];
+    EXPECT_EQ(std::count(b.begin(), b.end(), a[f % 4]), 0);
+    for(int k = 1; k < 4; ++k) EXPECT_EQ(std::count(b.begin(), b.end(), a[(f % 4 + k) % 4]), 1);
+  }
+  for(int threads : {2, 4})
+    EXPECT_EQ(CGAL::BODT_3::Tet_face_matching(d.cells, d.points.size(), threads).match, one.match);
+}
+
+// Three tetrahedra on one face: none of the three is matched, and the first face
+// (by id) of the crowd is reported; a tetrahedron using a vertex twice is skipped.
+TEST(Tet_face_matching, ReportsACrowdedFaceAndSurvivesABrokenCell)
+{
+  const std::vector<std::array<int, 4>> cells = {{0, 1, 2, 3}, {5, 6, 7, 8}, {1, 0, 2, 4}, {0, 1, 2, 5}, {6, 6, 7, 8}};
+  const CGAL::BODT_3::Tet_face_matching faces(cells, 9);
+  EXPECT_EQ(faces.crowded_face, 3);   // cell 0, face opposite vertex 3: (0 1 2)
+  EXPECT_EQ(faces.match[3], -1);
+  EXPECT_EQ(faces.match[4 * 2 + 3], -1);
+  EXPECT_EQ(faces.match[4 * 3 + 3], -1);
+}
+
+// The quality of a Tet_mesh is measured in blocks merged in order: the same report,
+// bit for bit, on any number of threads, and the two subdomains' volumes add up.
+TEST(MeshQuality, SameReportOnAnyNumberOfThreads)
+{
+  const Delaunay_cells d(20000);
+  Tet_mesh mesh;
+  mesh.points = d.points;
+  mesh.vertex_refs.assign(d.points.size(), 0);
+  mesh.tets = d.cells;
+  for(const auto& c : d.cells)
+  {
+    std::array<Point, 4> p = {d.points[c[0]], d.points[c[1]], d.points[c[2]], d.points[c[3]]};
+    mesh.tet_labels.push_back(CGAL::centroid(p[0], p[1], p[2], p[3]).x() < 0.5 ? 1 : 2);
+  }
+  ASSERT_GT(mesh.tets.size(), 4u * (1u << 14));   // several blocks
+  CGAL::BODT_3::Quality_options opt;
+  opt.threads = 1;
+  const auto one = CGAL::BODT_3::mesh_quality(mesh, opt);
+  for(int threads : {2, 4})
+  {
+    opt.threads = threads;
+    const auto many = CGAL::BODT_3::mesh_quality(mesh, opt);
+    EXPECT_EQ(nlohmann::json(many).dump(), nlohmann::json(one).dump()) << threads << " threads";
+    EXPECT_EQ(many.volume, one.volume);
+  }
+  EXPECT_NEAR(one.volume_per_subdomain.at(1) + one.volume_per_subdomain.at(2), one.volume, 1e-12);
+  EXPECT_GT(one.bad_tets_interior + one.bad_tets_touching_boundary, 0u);   // random points: bad tets everywhere
 }

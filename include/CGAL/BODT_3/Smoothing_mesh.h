@@ -164,14 +164,16 @@ struct Smoothing_mesh
       star.boundary.push_back({points[boundary_facets[k][0]], points[boundary_facets[k][1]]});
   }
 
-private:
-  // Cell adjacency through shared facets.
-  void find_neighbors()
+  /// The cell across each face, from matched faces of `cells`.
+  void set_neighbors(const Tet_face_matching& faces)
   {
-    const Tet_face_matching faces(cells, points.size());
     neighbor.resize(faces.match.size());
     for(std::size_t f = 0; f < faces.match.size(); ++f) neighbor[f] = faces.match[f] < 0 ? -1 : faces.match[f] / 4;
   }
+
+private:
+  // Cell adjacency through shared facets.
+  void find_neighbors() { set_neighbors(Tet_face_matching(cells, points.size())); }
 };
 
 } // namespace BODT_3

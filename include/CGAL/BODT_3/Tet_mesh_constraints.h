@@ -12,7 +12,6 @@
 #include <numeric>
 #include <set>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -60,23 +59,28 @@ Tet_mesh_constraints find_constraints(const Tet_mesh& tm, const Smoothing_mesh<K
     return internal::sorted({flat.cells[c][o[0]], flat.cells[c][o[1]], flat.cells[c][o[2]]});
   };
 
-  // Embedded triangles, then the parts of each subdomain they separate.
-  std::unordered_map<std::array<int, 3>, std::size_t, internal::Facet_key_hash> listed;
-  for(std::size_t f = 0; f < tm.triangles.size(); ++f)
-    if(tm.triangle_labels[f] != 0) listed.emplace(internal::sorted(tm.triangles[f]), f);
+  // Embedded triangles, then the parts of each subdomain they separate. A listed
+  // triangle's cells are found around its smallest vertex; the first listing wins.
   std::vector<char> barrier(4 * flat.cells.size(), 0);
   std::vector<std::pair<int, std::size_t>> embedded;   // (4 c + i, triangle), once per facet
-  if(!listed.empty())
-    for(int c = 0; c < nc; ++c)
+  for(std::size_t f = 0; f < tm.triangles.size(); ++f)
+  {
+    if(tm.triangle_labels[f] == 0) continue;
+    const auto t = internal::sorted(tm.triangles[f]);
+    int sides[2], found = 0;
+    for(int k = flat.incidence_begin[t[0]]; k < flat.incidence_begin[t[0] + 1]; ++k)
+    {
+      const int c = flat.incidences[k].cell;
       for(int i = 0; i < 4; ++i)
-      {
-        const int n = flat.neighbor[4 * c + i];
-        if(!flat.in_mesh[c] || n < 0 || !flat.in_mesh[n] || flat.subdomain[n] != flat.subdomain[c]) continue;
-        const auto it = listed.find(facet(c, i));
-        if(it == listed.end()) continue;
-        barrier[4 * c + i] = 1;
-        if(c < n) embedded.push_back({4 * c + i, it->second});
-      }
+        if(facet(c, i) == t && found < 2) sides[found++] = 4 * c + i;
+    }
+    if(found != 2) continue;
+    const int c = sides[0] / 4, n = sides[1] / 4;
+    if(!flat.in_mesh[c] || !flat.in_mesh[n] || flat.subdomain[n] != flat.subdomain[c] || barrier[sides[0]]) continue;
+    barrier[sides[0]] = barrier[sides[1]] = 1;
+    embedded.push_back({std::min(sides[0], sides[1]), f});
+  }
+  std::sort(embedded.begin(), embedded.end());
   out.embedded_triangles = embedded.size();
   std::vector<int> part(nc, -1);
   std::vector<int> label_of_part;

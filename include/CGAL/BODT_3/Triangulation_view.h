@@ -7,6 +7,7 @@
 #include <CGAL/BODT_3/Mesh_labels.h>
 #include <CGAL/BODT_3/bare_point.h>
 #include <CGAL/BODT_3/Smoothing_mesh.h>
+#include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/Vertex_classification.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -39,7 +40,8 @@ public:
   using Kernel = typename CGAL::Kernel_traits<Bare_point>::Kernel;
   using Mesh = Smoothing_mesh<Kernel>;
 
-  explicit Triangulation_view(Labels& labels) : labels_(labels)
+  /// `threads`: as `Smoothing_options::threads`; the view does not depend on it.
+  explicit Triangulation_view(Labels& labels, int threads = 1) : labels_(labels), workers_(threads)
   {
     if(labels.triangulation().dimension() != 3)
       throw std::invalid_argument("B-ODT smoothing needs a triangulation of dimension 3");
@@ -70,24 +72,27 @@ public:
         mesh_.points.push_back(cp(v->point()));
       }
     cells_.clear();
-    mesh_.cells.clear();
-    mesh_.in_mesh.clear();
-    mesh_.subdomain.clear();
     cell_index_.reset(tr.tds().number_of_cells());
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
     {
       cell_index_.insert(c, static_cast<int>(cells_.size()));
       cells_.push_back(c);
-      mesh_.cells.push_back({index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))});
-      const auto r = labels_.region(c);
-      mesh_.in_mesh.push_back(r.kind == Region_kind::mesh ? 1 : 0);
-      mesh_.subdomain.push_back(r.kind == Region_kind::mesh ? static_cast<int>(r.subdomain) : 0);
     }
+    // Then each cell's vertices, region and neighbours: lookups only, in parallel.
     // The adjacency is the triangulation's (the view's facet k is opposite vertex k, as in the cell).
-    mesh_.neighbor.assign(4 * cells_.size(), -1);
-    for(std::size_t c = 0; c < cells_.size(); ++c)
-      for(int i = 0; i < 4; ++i)
-        mesh_.neighbor[4 * c + i] = cell_index_.find(cells_[c]->neighbor(i));
+    const std::size_t nc = cells_.size();
+    mesh_.cells.resize(nc);
+    mesh_.in_mesh.resize(nc);
+    mesh_.subdomain.resize(nc);
+    mesh_.neighbor.resize(4 * nc);
+    workers_.for_each(0, static_cast<int>(nc), [this](char&, int k) {
+      const Cell_handle c = cells_[static_cast<std::size_t>(k)];
+      mesh_.cells[k] = {index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))};
+      const auto r = labels_.region(c);
+      mesh_.in_mesh[k] = r.kind == Region_kind::mesh ? 1 : 0;
+      mesh_.subdomain[k] = r.kind == Region_kind::mesh ? static_cast<int>(r.subdomain) : 0;
+      for(int i = 0; i < 4; ++i) mesh_.neighbor[4 * static_cast<std::size_t>(k) + i] = cell_index_.find(c->neighbor(i));
+    }, 1024);
     mesh_.hull_checks.clear();
     if(labels_.convex_hull()) add_hull_checks();
     mesh_.build_incidences();
@@ -138,6 +143,7 @@ private:
   }
 
   Labels& labels_;
+  Thread_workers<char> workers_;
   Mesh mesh_;
   std::vector<Vertex_handle> handles_;
   std::vector<Cell_handle> cells_;

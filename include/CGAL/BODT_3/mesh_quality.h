@@ -162,7 +162,7 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
     std::vector<std::array<int, 4>> cells;
     cells.reserve(measured.size());
     for(std::size_t t : measured) cells.push_back(mesh.tets[t]);
-    const Tet_face_matching faces(cells, mesh.points.size());
+    const Tet_face_matching faces(cells, mesh.points.size(), opt.threads);
     for(std::size_t c = 0; c < cells.size(); ++c)
       for(int i = 0; i < 4; ++i)
       {

@@ -62,7 +62,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   CGAL::Real_timer timer;
   timer.start();
 
-  Triangulation_view<Labels> view(labels);
+  Triangulation_view<Labels> view(labels, opt.threads);
   auto& mesh = view.mesh();
 
   Vertex_classification cls = classify(view, classification_options(opt));

@@ -15,6 +15,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -122,6 +123,9 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   flat.in_mesh.resize(tm.tets.size());
   for(std::size_t t = 0; t < tm.tets.size(); ++t) flat.in_mesh[t] = tm.in_mesh(t, all_zero) ? 1 : 0;
   flat.subdomain = tm.tet_labels;
+  // The faces are matched once, for this flat copy and for the triangulation.
+  std::optional<Tet_face_matching> faces(std::in_place, tm.tets, tm.points.size(), options.threads);
+  flat.set_neighbors(*faces);
   flat.build_incidences();
   Tet_mesh_constraints constraints = find_constraints(tm, flat);
   flat.subdomain = constraints.subdomain;
@@ -144,7 +148,8 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   std::vector<Tet_mesh_c3t3::Vertex_handle> handles;
   // The complex is built with the working labels; the file's come back at the end.
   if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
-  tet_mesh_to_c3t3(tm, c3t3, std::string(), &handles);
+  tet_mesh_to_c3t3(tm, c3t3, std::string(), &handles, &*faces);
+  faces.reset();
   if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
   internal::add_constraints_to_complex(tm, constraints, handles, c3t3);
 

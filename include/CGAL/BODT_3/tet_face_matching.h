@@ -3,6 +3,8 @@
 #ifndef CGAL_BODT_3_TET_FACE_MATCHING_H
 #define CGAL_BODT_3_TET_FACE_MATCHING_H
 
+#include <CGAL/BODT_3/Thread_workers.h>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -23,7 +25,8 @@ struct Tet_face_matching
   /// The first face (in face id order) shared by three or more cells, or -1.
   long long crowded_face = -1;
 
-  Tet_face_matching(const std::vector<std::array<int, 4>>& cells, std::size_t number_of_points)
+  /// `threads`: as `Smoothing_options::threads` (0: every core); the result does not depend on it.
+  Tet_face_matching(const std::vector<std::array<int, 4>>& cells, std::size_t number_of_points, int threads = 1)
   {
     const std::size_t nc = cells.size();
     std::vector<int> begin(number_of_points + 1, 0), around(4 * nc);
@@ -38,17 +41,11 @@ struct Tet_face_matching
 
     // Each face is matched at its smallest vertex: the faces of the cells around a
     // vertex that have it as smallest vertex, sorted by their two other vertices,
-    // pair up with their equals.
+    // pair up with their equals. Vertices are independent: they run in parallel.
     match.assign(4 * nc, -1);
-    struct Face
-    {
-      int b, c, id;
-      bool operator<(const Face& o) const { return b != o.b ? b < o.b : c != o.c ? c < o.c : id < o.id; }
-      bool same(const Face& o) const { return b == o.b && c == o.c; }
-    };
-    std::vector<Face> faces;
-    for(std::size_t v = 0; v < number_of_points; ++v)
-    {
+    Thread_workers<Worker> workers(threads);
+    workers.for_each(0, static_cast<int>(number_of_points), [&](Worker& w, int v) {
+      auto& faces = w.faces;
       faces.clear();
       for(int k = begin[v]; k < begin[v + 1]; ++k)
       {
@@ -57,10 +54,10 @@ struct Tet_face_matching
         for(int i = 0; i < 4; ++i)
         {
           const int x = q[(i + 1) & 3], y = q[(i + 2) & 3], z = q[(i + 3) & 3];
-          if(std::min(x, std::min(y, z)) != static_cast<int>(v)) continue;
+          if(std::min(x, std::min(y, z)) != v) continue;
           int o[2], m = 0;
           for(int a : {x, y, z})
-            if(a != static_cast<int>(v) && m < 2) o[m++] = a;
+            if(a != v && m < 2) o[m++] = a;
           if(m < 2) continue;   // a cell using a vertex twice has no face here
           faces.push_back({std::min(o[0], o[1]), std::max(o[0], o[1]), 4 * cell + i});
         }
@@ -75,12 +72,28 @@ struct Tet_face_matching
           match[static_cast<std::size_t>(faces[a].id)] = faces[a + 1].id;
           match[static_cast<std::size_t>(faces[a + 1].id)] = faces[a].id;
         }
-        else if(b - a > 2 && (crowded_face < 0 || faces[a].id < crowded_face))
-          crowded_face = faces[a].id;
+        else if(b - a > 2 && (w.crowded < 0 || faces[a].id < w.crowded))
+          w.crowded = faces[a].id;
         a = b;
       }
-    }
+    }, 256);
+    workers.each_worker([this](const Worker& w) {
+      if(w.crowded >= 0 && (crowded_face < 0 || w.crowded < crowded_face)) crowded_face = w.crowded;
+    });
   }
+
+private:
+  struct Face
+  {
+    int b, c, id;
+    bool operator<(const Face& o) const { return b != o.b ? b < o.b : c != o.c ? c < o.c : id < o.id; }
+    bool same(const Face& o) const { return b == o.b && c == o.c; }
+  };
+  struct Worker
+  {
+    std::vector<Face> faces;   // around one vertex
+    long long crowded = -1;
+  };
 };
 
 } // namespace BODT_3

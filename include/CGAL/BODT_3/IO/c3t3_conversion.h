@@ -3,6 +3,7 @@
 #ifndef CGAL_BODT_3_IO_C3T3_CONVERSION_H
 #define CGAL_BODT_3_IO_C3T3_CONVERSION_H
 
+#include <CGAL/BODT_3/Handle_index_map.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/Tet_mesh_cell_base_3.h>
 #include <CGAL/BODT_3/tet_face_matching.h>
@@ -22,6 +23,8 @@
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -136,10 +139,12 @@ private:
 /// no edge of the tetrahedra. `c3t3` is unchanged then.
 ///
 /// When `handles` is given, it receives the vertex of each point (a default handle
-/// for points no tetrahedron uses), for `update_tet_mesh`.
+/// for points no tetrahedron uses), for `update_tet_mesh`. `faces`: the faces of
+/// `mesh.tets` matched, if the caller has them already.
 template <class C3T3>
 void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file = std::string(),
-                      std::vector<typename C3T3::Vertex_handle>* handles = nullptr)
+                      std::vector<typename C3T3::Vertex_handle>* handles = nullptr,
+                      const Tet_face_matching* faces = nullptr)
 {
   using namespace internal_c3t3;
   using Tr = typename C3T3::Triangulation;
@@ -202,11 +207,12 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
   }
 
   // Finite cells, glued along the faces they share.
-  const Tet_face_matching faces(mesh.tets, mesh.points.size());
-  if(faces.crowded_face >= 0)
+  std::optional<Tet_face_matching> own;
+  if(!faces) faces = &own.emplace(mesh.tets, mesh.points.size());
+  if(faces->crowded_face >= 0)
   {
-    const auto t = static_cast<std::size_t>(faces.crowded_face / 4);
-    fail("face (" + face_to_string(oriented_face(mesh.tets[t], static_cast<int>(faces.crowded_face % 4))) +
+    const auto t = static_cast<std::size_t>(faces->crowded_face / 4);
+    fail("face (" + face_to_string(oriented_face(mesh.tets[t], static_cast<int>(faces->crowded_face % 4))) +
          ") belongs to three or more tetrahedra");
   }
   std::vector<Cell_handle> cells(nt);
@@ -219,7 +225,7 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
       if(vh[q[k]]->cell() == Cell_handle()) vh[q[k]]->set_cell(c);
     for(int i = 0; i < 4; ++i)
     {
-      const int m = faces.match[4 * t + static_cast<std::size_t>(i)];
+      const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
       const auto other = static_cast<std::size_t>(m / 4);
       if(m < 0 || other > t) continue;
       const std::array<int, 3> f = oriented_face(q, i);
@@ -503,16 +509,22 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
   auto cp = tr.geom_traits().construct_point_3_object();
   const bool all_zero = mesh.all_labels_zero();
 
-  std::unordered_map<Vertex_handle, int> index;
+  Handle_index_map<Vertex_handle> index_map;
+  index_map.reset(tr.number_of_vertices());
+  auto index = [&index_map](Vertex_handle v) {
+    const int i = index_map.find(v);
+    if(i < 0) throw std::out_of_range("update_tet_mesh: a vertex of the triangulation is not indexed");
+    return i;
+  };
   for(std::size_t i = 0; i < handles.size(); ++i)
     if(handles[i] != Vertex_handle())
     {
-      index.emplace(handles[i], static_cast<int>(i));
+      index_map.insert(handles[i], static_cast<int>(i));
       const auto& p = cp(handles[i]->point());
       mesh.points[i] = Tet_mesh::Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     }
   for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-    if(index.emplace(v, static_cast<int>(mesh.points.size())).second)
+    if(index_map.insert(v, static_cast<int>(mesh.points.size())))
     {
       const auto& p = cp(v->point());
       mesh.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
@@ -523,8 +535,8 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
   mesh.tet_labels.clear();
   for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
   {
-    mesh.tets.push_back({index.at(c->vertex(0)), index.at(c->vertex(1)), index.at(c->vertex(2)),
-                         index.at(c->vertex(3))});
+    mesh.tets.push_back({index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)),
+                         index(c->vertex(3))});
     mesh.tet_labels.push_back(all_zero || !c3t3.is_in_complex(c) ? 0 : static_cast<int>(c3t3.subdomain_index(c)));
   }
 
@@ -545,7 +557,7 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
                          c3t3.subdomain_index(mirror.first) < c3t3.subdomain_index(f->first));
       const auto& side = flip ? mirror : *f;
       std::array<int, 3> t;
-      for(int k = 0; k < 3; ++k) t[k] = index.at(side.first->vertex(U::vertex_triple_index(side.second, 2 - k)));
+      for(int k = 0; k < 3; ++k) t[k] = index(side.first->vertex(U::vertex_triple_index(side.second, 2 - k)));
       present.emplace(sorted(t), patch);
       added.push_back(t);
       added_labels.push_back(patch);
@@ -599,9 +611,9 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
       {
         chain.assign(1, a);
         Vertex_handle prev = va, cur = start.first;
-        while(index.at(cur) >= original)
+        while(index(cur) >= original)
         {
-          chain.push_back(index.at(cur));
+          chain.push_back(index(cur));
           around.clear();
           c3t3.adjacent_vertices_in_complex(cur, std::back_inserter(around));
           Vertex_handle next;
