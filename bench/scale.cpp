@@ -9,8 +9,8 @@
 // time, the phases from the JSON report (read, quality, conversion to the
 // triangulation and back, set-up, sweeps, flips, max-min steps, insertion, re-reads;
 // writing is the rest of the wall time), tetrahedron-iterations per second of
-// smoothing, peak resident memory of the child (wait4's ru_maxrss) per
-// tetrahedron, and whether the output has the same bytes as the one-thread run.
+// smoothing, peak resident memory of the child (GNU time's %M) per tetrahedron,
+// and whether the output has the same bytes as the one-thread run.
 // Prints a Markdown table and writes a log-log plot (SVG) of wall time and
 // smoothing time against the number of tetrahedra.
 //
@@ -25,7 +25,6 @@
 #include <nlohmann/json.hpp>
 
 #include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -77,9 +76,14 @@ bool same_file(const fs::path& a, const fs::path& b)
                     std::istreambuf_iterator<char>(fb), std::istreambuf_iterator<char>());
 }
 
-// Runs `argv` as a child; returns its wall time and peak resident set (MB).
-std::pair<double, double> run_child(const std::vector<std::string>& args)
+// Runs `args` as a child; returns its wall time and peak resident set (MB). The
+// peak comes from GNU time (/usr/bin/time -f %M), whose own process is small: a
+// child spawned from this process directly would report this process's resident
+// set (the generated mesh) while it shares its memory before exec.
+std::pair<double, double> run_child(std::vector<std::string> args, const fs::path& folder)
 {
+  const fs::path peak_file = folder / "scale_peak.txt";
+  args.insert(args.begin(), {"/usr/bin/time", "-f", "%M", "-o", peak_file.string()});
   std::vector<char*> argv;
   for(const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -88,11 +92,13 @@ std::pair<double, double> run_child(const std::vector<std::string>& args)
   if(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
     throw std::runtime_error("cannot start " + args[0]);
   int status = 0;
-  rusage usage{};
-  if(wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(args[0] + " failed on " + args[2]);
+  if(waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error(args[5] + " failed on " + args[7]);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {wall, static_cast<double>(usage.ru_maxrss) / 1024.0};
+  double kilobytes = 0;
+  std::ifstream(peak_file) >> kilobytes;
+  fs::remove(peak_file);
+  return {wall, kilobytes / 1024.0};
 }
 
 std::vector<Run> measure(const std::string& name, const BODT::Tet_mesh& mesh, const std::vector<double>& threads,
@@ -111,7 +117,8 @@ std::vector<Run> measure(const std::string& name, const BODT::Tet_mesh& mesh, co
     const fs::path report = folder / ("scale_" + name + ".json");
     std::tie(r.wall, r.peak_mb) =
         run_child({bodt, "smooth", input.string(), "-o", output.string(), "--iterations", std::to_string(iterations),
-                   "--threads", std::to_string(r.threads), "--report", report.string(), "-q"});
+                   "--threads", std::to_string(r.threads), "--report", report.string(), "-q"},
+                  folder);
     std::ifstream in(report);
     const nlohmann::json j = nlohmann::json::parse(in);
     r.read = j["process_seconds"]["read"];
