@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_MOVE_GUARD_H
 
 #include <CGAL/BODT_3/Smoothing_mesh.h>
+#include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/tet_quality.h>
 
 #include <CGAL/Kernel/global_functions.h>
@@ -59,9 +60,10 @@ public:
     Refusal first_refusal = Refusal::worsens_quality;   // of the full-length move
   };
 
+  /// `threads` measure the cells (`refresh`); nothing depends on their number.
   Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard, const Dihedral_bounds& bounds,
-             Quality_measure measure = Quality_measure::min_dihedral_sine)
-    : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds), measure_(measure)
+             Quality_measure measure = Quality_measure::min_dihedral_sine, int threads = 1)
+    : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds), measure_(measure), workers_(threads)
   {
     refresh();
   }
@@ -71,11 +73,10 @@ public:
   {
     if(!quality_guard_) return;
     quality_.resize(mesh_.cells.size());
-    for(std::size_t c = 0; c < mesh_.cells.size(); ++c)
-    {
+    workers_.for_each(0, static_cast<int>(mesh_.cells.size()), [this](char&, int c) {
       const auto& q = mesh_.cells[c];
       quality_[c] = tet_quality(measure_, mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]);
-    }
+    }, 1024);
   }
 
   /// Moves `v` by `X`, or by the longest of X/2, X/4, X/8 that is accepted;
@@ -194,6 +195,7 @@ private:
   Dihedral_bounds bounds_;
   Quality_measure measure_;
   std::vector<double> quality_;   // per cell
+  Thread_workers<char> workers_;
 };
 
 } // namespace BODT_3

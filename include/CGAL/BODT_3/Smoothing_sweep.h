@@ -36,7 +36,7 @@ public:
 
   Smoothing_sweep(Smoothing_mesh<K>& mesh, const Vertex_classification& cls, const Smoothing_options& opt,
                   const Dihedral_bounds& bounds)
-    : mesh_(mesh), cls_(cls), opt_(opt), guard_(mesh, opt.quality_guard, bounds, opt.quality_measure),
+    : mesh_(mesh), cls_(cls), opt_(opt), guard_(mesh, opt.quality_guard, bounds, opt.quality_measure, opt.threads),
       workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1), moved_now_(mesh.number_of_vertices(), 0),
       moved_once_(mesh.number_of_vertices(), 0)
   {

@@ -159,9 +159,10 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
   // A face is on the boundary or an interface unless two mesh tets of one label share it.
   std::vector<char> on_boundary(mesh.points.size(), 0);
   {
-    std::vector<std::array<int, 4>> cells;
-    cells.reserve(measured.size());
-    for(std::size_t t : measured) cells.push_back(mesh.tets[t]);
+    std::vector<std::array<int, 4>> some;   // a copy only when some tetrahedra are not measured
+    if(measured.size() < mesh.tets.size())
+      for(std::size_t t : measured) some.push_back(mesh.tets[t]);
+    const auto& cells = measured.size() < mesh.tets.size() ? some : mesh.tets;
     const Tet_face_matching faces(cells, mesh.points.size(), opt.threads);
     for(std::size_t c = 0; c < cells.size(); ++c)
       for(int i = 0; i < 4; ++i)

@@ -24,12 +24,23 @@ struct Tet_face_matching
   std::vector<int> match;
   /// The first face (in face id order) shared by three or more cells, or -1.
   long long crowded_face = -1;
+  /// The cells around each vertex, in cell order: `vertex_cells[k]` for k in
+  /// [`vertex_cells_begin[v]`, `vertex_cells_begin[v + 1]`).
+  std::vector<int> vertex_cells_begin, vertex_cells;
+  /// The threads it was built with, for the checks that use it.
+  int threads = 1;
 
-  /// `threads`: as `Smoothing_options::threads` (0: every core); the result does not depend on it.
-  Tet_face_matching(const std::vector<std::array<int, 4>>& cells, std::size_t number_of_points, int threads = 1)
+  /// `number_of_threads`: as `Smoothing_options::threads` (0: every core); the
+  /// result does not depend on it.
+  Tet_face_matching(const std::vector<std::array<int, 4>>& cells, std::size_t number_of_points,
+                    int number_of_threads = 1)
+    : threads(number_of_threads)
   {
     const std::size_t nc = cells.size();
-    std::vector<int> begin(number_of_points + 1, 0), around(4 * nc);
+    std::vector<int>& begin = vertex_cells_begin;
+    std::vector<int>& around = vertex_cells;
+    begin.assign(number_of_points + 1, 0);
+    around.resize(4 * nc);
     for(const auto& c : cells)
       for(int v : c) ++begin[static_cast<std::size_t>(v) + 1];
     for(std::size_t v = 0; v < number_of_points; ++v) begin[v + 1] += begin[v];

@@ -6,6 +6,7 @@
 #include <CGAL/BODT_3/Handle_index_map.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/Tet_mesh_cell_base_3.h>
+#include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/tet_face_matching.h>
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
 #include <CGAL/BODT_3/IO/check_tet_mesh.h>
@@ -240,7 +241,6 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
   // infinite vertex in place of the far one and two others swapped, so that both
   // cells induce opposite orientations on the face. Infinite cells are then glued
   // along boundary edges, which must have exactly two boundary faces.
-  std::vector<std::size_t> star_size(n, 0);
   std::unordered_map<std::uint64_t, std::vector<std::pair<Cell_handle, int>>> hull_edges;
   for(std::size_t t = 0; t < nt; ++t)
     for(int i = 0; i < 4; ++i)
@@ -259,7 +259,6 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
       for(int k = 0; k < 4; ++k)
       {
         if(k == i) continue;
-        ++star_size[id[k]];
         // The face opposite `k` holds the infinite vertex and the boundary edge `e`.
         int e[2], m = 0;
         for(int j = 0; j < 4; ++j)
@@ -281,20 +280,48 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
   }
 
   // Triangulations reach the cells around a vertex through the faces around it:
-  // tetrahedra that only touch at a vertex would be lost.
-  for(const auto& q : mesh.tets)
-    for(int v : q) ++star_size[v];
-  std::vector<Cell_handle> star;
-  for(int i = 0; i < n; ++i)
+  // tetrahedra that only touch at a vertex would be lost. The tetrahedra around
+  // each vertex must be connected through faces holding it (the outside cells
+  // connect nothing more: every boundary edge has two boundary faces, checked
+  // above); vertices are checked in parallel, and the first failing one reported.
+  struct Star_worker
   {
-    if(!used[i]) continue;
-    star.clear();
-    tds.incident_cells(vh[i], std::back_inserter(star));
-    if(star.size() != star_size[i])
-      fail("the mesh is not manifold at vertex " + std::to_string(i + 1) + ": its " +
-           std::to_string(star_size[i]) + " cells (with the outside) form separate groups that only touch "
-           "there, and a triangulation needs them connected through faces");
-  }
+    std::vector<int> mark;    // per cell: the last vertex whose star reached it
+    std::vector<int> stack;
+    int first_bad = -1;
+  };
+  Thread_workers<Star_worker> star_workers(faces->threads);
+  star_workers.for_each(0, n, [&](Star_worker& w, int v) {
+    const int b = faces->vertex_cells_begin[v], e = faces->vertex_cells_begin[v + 1];
+    if(b == e) return;
+    if(w.mark.empty()) w.mark.assign(nt, -1);
+    w.mark[faces->vertex_cells[b]] = v;
+    w.stack.assign(1, faces->vertex_cells[b]);
+    int reached = 1;
+    while(!w.stack.empty())
+    {
+      const int c = w.stack.back();
+      w.stack.pop_back();
+      for(int i = 0; i < 4; ++i)
+      {
+        const int m = faces->match[4 * static_cast<std::size_t>(c) + i];
+        if(mesh.tets[c][i] == v || m < 0 || w.mark[m / 4] == v) continue;
+        w.mark[m / 4] = v;
+        w.stack.push_back(m / 4);
+        ++reached;
+      }
+    }
+    if(reached != e - b && (w.first_bad < 0 || v < w.first_bad)) w.first_bad = v;
+  }, 256);
+  int pinched = -1;
+  star_workers.each_worker([&pinched](const Star_worker& w) {
+    if(w.first_bad >= 0 && (pinched < 0 || w.first_bad < pinched)) pinched = w.first_bad;
+  });
+  if(pinched >= 0)
+    fail("the mesh is not manifold at vertex " + std::to_string(pinched + 1) + ": its " +
+         std::to_string(faces->vertex_cells_begin[pinched + 1] - faces->vertex_cells_begin[pinched]) +
+         " tetrahedra form separate groups that only touch there, and a triangulation needs them "
+         "connected through faces");
 
   // The complex.
   for(int i = 0; i < n; ++i)
