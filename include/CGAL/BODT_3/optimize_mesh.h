@@ -188,7 +188,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       stamp_regions(history);
       touched.clear();
       added.clear();
-      // The guard already knows every mesh cell's quality: start from the bad ones.
+      // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
       const bool known = guard_knows && !opt.flips.flip_outside;
       if(known) cells_below(opt.flips.quality_threshold);
       stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure,
