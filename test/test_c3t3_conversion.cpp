@@ -4,6 +4,7 @@
 // mesh, integral surface patch indices, meshes no triangulation can hold, and the
 // shared third-party meshes.
 #include "inputs/generated_inputs.h"
+#include "test_support.h"
 
 #include <CGAL/BODT_3/IO/c3t3_conversion.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -535,6 +536,40 @@ TEST(C3t3_conversion, MeshesNoTriangulationCanHoldThrow)
   EXPECT_THROW(BODT::tet_mesh_to_c3t3(bad_edge, c), Mesh_io_error);
   EXPECT_EQ(c.number_of_cells_in_complex(), 2u);
   EXPECT_EQ(c.triangulation().number_of_vertices(), 6u);
+}
+
+// The conversion checks and links its cells in parallel: the same complex on any
+// number of threads, and the first bad cell in file order reported.
+TEST(C3t3_conversion, SameComplexAndSameRefusalOnAnyNumberOfThreads)
+{
+  const Tet_mesh grid = bodt_test::cube_grid(16, [](int i, int, int) { return i < 8 ? 1 : 2; });
+  auto convert = [](const Tet_mesh& m, int threads, BODT::Tet_mesh_c3t3& c) {
+    const BODT::Tet_face_matching faces(m.tets, m.points.size(), threads);
+    BODT::tet_mesh_to_c3t3(m, c, "grid.mesh", nullptr, &faces);
+  };
+  BODT::Tet_mesh_c3t3 one, four;
+  convert(grid, 1, one);
+  convert(grid, 4, four);
+  EXPECT_TRUE(four.triangulation().is_valid());
+  EXPECT_EQ(four.number_of_cells_in_complex(), grid.tets.size());
+  EXPECT_EQ(four.number_of_facets_in_complex(), one.number_of_facets_in_complex());
+  bodt_test::expect_same_mesh_content(BODT::c3t3_to_tet_mesh(four), BODT::c3t3_to_tet_mesh(one));
+
+  Tet_mesh inverted = grid;
+  for(std::size_t t : {19999u, 8999u}) std::swap(inverted.tets[t][0], inverted.tets[t][1]);
+  for(int threads : {1, 4})
+  {
+    BODT::Tet_mesh_c3t3 c;
+    try
+    {
+      convert(inverted, threads, c);
+      ADD_FAILURE() << "an inverted mesh was converted";
+    }
+    catch(const Mesh_io_error& e)
+    {
+      EXPECT_EQ(e.message(), "tetrahedron 9000 is negatively oriented; a triangulation needs positively oriented cells");
+    }
+  }
 }
 
 TEST(C3t3_conversion, SeveralBoundaryComponentsAreAccepted)

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -181,6 +182,76 @@ TEST(MeditIO, EveryBadInputThrowsWithFileAndLine)
       }
       EXPECT_NE(what.find(bad.words), std::string::npos) << bad.name << ": " << what;
     }
+  }
+}
+
+// Sections laid out one entry per line are read in parallel blocks of rows, any
+// other layout token by token: both read the same mesh, and on a bad file both
+// report the first defect in file order, with its line, on any number of threads.
+TEST(MeditIO, ParallelRowsAndTokensReadTheSame)
+{
+  // 24,576 tetrahedra: six blocks of rows, and the checks' parts on four threads.
+  const Tet_mesh grid = cube_grid(16, [](int i, int, int) { return i < 8 ? 1 : 2; });
+  std::ostringstream written;
+  CGAL::BODT_3::IO::write_medit(written, grid);
+  const std::string rows = written.str();
+  std::string tokens = rows;   // the same numbers, one per line
+  std::replace(tokens.begin() + static_cast<std::ptrdiff_t>(tokens.find("Vertices")), tokens.end(), ' ', '\n');
+  auto read = [](const std::string& name, const std::string& text, int threads) {
+    std::ostringstream warnings;
+    return CGAL::BODT_3::IO::read_medit(write_file(name, text).string(), warnings, nullptr, threads);
+  };
+  for(int threads : {1, 2, 4})
+  {
+    expect_same_mesh_content(read("rows.mesh", rows, threads), grid);
+    expect_same_mesh_content(read("tokens.mesh", tokens, threads), grid);
+  }
+
+  // Line of tetrahedron t (1-based) and of vertex v in `rows`.
+  int tets_at = 0, vertices_at = 0, line = 1;
+  for(std::size_t p = 0; p < rows.size(); ++p)
+  {
+    if(rows.compare(p, 11, "Tetrahedra\n") == 0) tets_at = line + 1;
+    if(rows.compare(p, 9, "Vertices\n") == 0) vertices_at = line + 1;
+    if(rows[p] == '\n') ++line;
+  }
+  ASSERT_GT(tets_at, 0);
+  auto tet_line = [&](int t) { return tets_at + t; };
+  auto tet = [&](int t) {
+    const auto& q = grid.tets[static_cast<std::size_t>(t - 1)];
+    return std::to_string(q[0] + 1) + " " + std::to_string(q[1] + 1) + " " + std::to_string(q[2] + 1) + " " +
+           std::to_string(q[3] + 1) + " 1";
+  };
+  // Two different flat tetrahedra, in the plane z = 0.
+  const std::string flat = "1 2 19 18 1", other_flat = "2 3 20 19 1";
+  struct Case { std::string name, text; long line; std::string words; };
+  const std::vector<Case> cases = {
+      {"late_bad_index.mesh", with_line(rows, tet_line(20000), "1 2 3 99999 1"), tet_line(20000), "refers to vertex 99999"},
+      {"bad_coordinate.mesh", with_line(rows, vertices_at + 3000, "1 x 0 0"), vertices_at + 3000, "found 'x'"},
+      {"two_repeats.mesh", with_line(with_line(rows, tet_line(20001), tet(3)), tet_line(15000), tet(5)),
+       tet_line(15000), "tetrahedron 15000 (" + tet(5).substr(0, tet(5).size() - 2) + ") repeats tetrahedron 5"},
+      {"two_flat.mesh", with_line(with_line(rows, tet_line(20000), other_flat), tet_line(12000), flat), tet_line(12000),
+       "tetrahedron 12000 (1 2 19 18) is flat"},
+  };
+  for(const Case& c : cases)
+  {
+    std::string message[2];
+    long at[2] = {0, 0};
+    for(int k = 0; k < 2; ++k)
+      try
+      {
+        read(c.name, c.text, k == 0 ? 1 : 4);
+        ADD_FAILURE() << c.name << " was accepted";
+      }
+      catch(const Mesh_io_error& e)
+      {
+        message[k] = e.what();
+        at[k] = e.line();
+      }
+    EXPECT_EQ(message[0], message[1]) << c.name;
+    EXPECT_EQ(at[0], c.line) << c.name << ": " << message[0];
+    EXPECT_EQ(at[1], c.line) << c.name << ": " << message[1];
+    EXPECT_NE(message[0].find(c.words), std::string::npos) << c.name << ": " << message[0];
   }
 }
 

@@ -2,6 +2,8 @@
 // approximate_dihedral_angle, counts, volumes, exact inversion test, and the
 // real meshes of ../shared/data when present.
 #include <CGAL/BODT_3/Handle_index_map.h>
+#include <CGAL/BODT_3/Thread_workers.h>
+#include <CGAL/BODT_3/group_by_key.h>
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -255,6 +257,53 @@ TEST(Handle_index_map, FindsWhatWasInsertedThroughGrowth)
   map.reset(10);
   EXPECT_EQ(map.find(&storage[0]), -1);
   EXPECT_EQ(map.size(), 0u);
+}
+
+// Handles inserted from several threads at once are found with their index.
+TEST(Handle_index_map, InsertAllFromThreadsFindsEveryHandle)
+{
+  std::vector<int> storage(50000), others(100);
+  std::vector<int*> handles;
+  for(int& x : storage) handles.push_back(&x);
+  for(int threads : {1, 2, 4})
+  {
+    CGAL::BODT_3::Handle_index_map<int*> map;
+    map.reset(handles.size() / 4);   // grows before the threads insert
+    CGAL::BODT_3::Thread_workers<char> workers(threads);
+    map.insert_all(handles, workers);
+    EXPECT_EQ(map.size(), handles.size());
+    for(std::size_t i = 0; i < handles.size(); ++i) ASSERT_EQ(map.find(handles[i]), static_cast<int>(i));
+    for(int& x : others) EXPECT_EQ(map.find(&x), -1);
+    EXPECT_FALSE(map.insert(handles[9], 1));
+  }
+}
+
+// The parallel counting sort groups like a sequential stable one, on any number of threads.
+TEST(GroupByKey, StableGroupsOnAnyNumberOfThreads)
+{
+  CGAL::Random random(3);
+  const std::size_t items = 100000, keys = 5000;
+  std::vector<std::array<int, 3>> item_keys(items);
+  for(auto& k : item_keys)
+    for(int& x : k) x = random.get_int(0, static_cast<int>(keys));
+  // Item i emits (k, 3 i + j) for its j-th key k.
+  auto each = [&](std::size_t i, const auto& emit) {
+    for(int j = 0; j < 3; ++j) emit(static_cast<std::size_t>(item_keys[i][j]), static_cast<long>(3 * i + j));
+  };
+  std::vector<std::vector<long>> expected(keys);
+  for(std::size_t i = 0; i < items; ++i)
+    for(int j = 0; j < 3; ++j) expected[item_keys[i][j]].push_back(static_cast<long>(3 * i + j));
+  for(int threads : {1, 2, 4, 16})
+  {
+    std::vector<int> begin;
+    std::vector<long> values;
+    CGAL::BODT_3::group_by_key<long>(items, keys, threads, each, begin, values);
+    ASSERT_EQ(begin.size(), keys + 1);
+    ASSERT_EQ(values.size(), 3 * items);
+    for(std::size_t k = 0; k < keys; ++k)
+      ASSERT_EQ(std::vector<long>(values.begin() + begin[k], values.begin() + begin[k + 1]), expected[k])
+          << "key " << k << ", " << threads << " threads";
+  }
 }
 
 namespace {

@@ -53,9 +53,10 @@ Output_format choose_output_format(const std::string& path, const std::string& f
   return {true, f};
 }
 
-void write_output(const std::string& path, const CGAL::BODT_3::Tet_mesh& mesh, const IO::Mesh_file_format& format)
+void write_output(const std::string& path, const CGAL::BODT_3::Tet_mesh& mesh, const IO::Mesh_file_format& format,
+                  int threads)
 {
-  IO::write_mesh(path, mesh, format);
+  IO::write_mesh(path, mesh, format, threads);
 }
 
 namespace {

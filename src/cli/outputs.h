@@ -39,7 +39,7 @@ Output_format choose_output_format(const std::string& path, const std::string& f
 
 /// Writes the mesh in `format`, atomically (temporary file, then rename).
 void write_output(const std::string& path, const CGAL::BODT_3::Tet_mesh& mesh,
-                  const CGAL::BODT_3::IO::Mesh_file_format& format);
+                  const CGAL::BODT_3::IO::Mesh_file_format& format, int threads = 1);
 
 /// Refuses an input that is a folder (the readers would fail without saying which
 /// file), with a `Mesh_io_error` naming it.

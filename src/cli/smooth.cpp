@@ -98,7 +98,7 @@ int run_smooth(Smooth_options o)
   };
   std::ostringstream silenced;
   BODT::IO::Mesh_file_format input_format;
-  BODT::Tet_mesh mesh = BODT::IO::read_mesh(o.input, input_format, o.quiet ? silenced : std::cerr);
+  BODT::Tet_mesh mesh = BODT::IO::read_mesh(o.input, input_format, o.quiet ? silenced : std::cerr, opt.threads);
   const double read_seconds = lap();
   const BODT::IO::Mesh_file_format output_format = format.resolve(o.output, input_format);
   BODT::Quality_options measures;
@@ -148,7 +148,7 @@ int run_smooth(Smooth_options o)
         {"output", o.output}};
     side_files.stage(o.html, BODT::html_report(o.input, before, after, run));
   }
-  write_output(o.output, mesh, output_format);
+  write_output(o.output, mesh, output_format, opt.threads);
   side_files.commit();
   if(!o.quiet) print_table(before, after, result, mesh.points.size());
   return 0;
@@ -193,7 +193,7 @@ Command add_smooth(CLI::App& command)
                      "(default 0.34, about 20 degrees; 0: off)")
       ->check(CLI::Range(0., 1.));
   command.add_option("--threads", o->smoothing.threads,
-                     "threads of the smoothing sweeps (default 0: every core); the output does not depend on it")
+                     "threads of the reading, quality reports, smoothing and writing (default 0: every core); the output does not depend on it")
       ->check(CLI::Range(0, 4096));
   command.add_option("--report", o->report, "write a JSON report: options, every sweep, quality before and after");
   command.add_option("--html", o->html,

@@ -3,6 +3,7 @@
 #ifndef CGAL_BODT_3_HANDLE_INDEX_MAP_H
 #define CGAL_BODT_3_HANDLE_INDEX_MAP_H
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -26,7 +27,7 @@ public:
   {
     std::size_t capacity = 16;
     while(capacity < 2 * n) capacity *= 2;
-    slots_.assign(capacity, Slot{0, -1});
+    allocate(capacity);
     size_ = 0;
   }
 
@@ -35,63 +36,92 @@ public:
   /// Inserts (h, index) unless h is there; returns whether it was inserted.
   bool insert(Handle h, int index)
   {
-    if(2 * (size_ + 1) > slots_.size()) grow();
-    const std::uintptr_t key = address(h);
-    for(std::size_t s = slot(key);; s = (s + 1) & (slots_.size() - 1))
-    {
-      if(slots_[s].key == key) return false;
-      if(slots_[s].key == 0)
-      {
-        slots_[s] = Slot{key, index};
-        ++size_;
-        return true;
-      }
-    }
+    if(2 * (size_ + 1) > capacity_) grow();
+    if(!place(address(h), index)) return false;
+    ++size_;
+    return true;
+  }
+
+  /// Inserts (handles[i], i) for every i, from `workers` threads (Thread_workers.h),
+  /// into a map that holds none of them. Slots are claimed by compare-and-swap, so
+  /// where an entry lands depends on the threads, what `find` returns does not.
+  template <class Workers>
+  void insert_all(const std::vector<Handle>& handles, Workers& workers)
+  {
+    while(2 * (size_ + handles.size()) > capacity_) grow();
+    workers.for_each(0, static_cast<int>(handles.size()), [&](auto&, int i) {
+      place(address(handles[static_cast<std::size_t>(i)]), i);
+    }, 4096);
+    size_ += handles.size();
   }
 
   /// The index of h, or -1.
   int find(Handle h) const
   {
-    if(slots_.empty()) return -1;
+    if(capacity_ == 0) return -1;
     const std::uintptr_t key = address(h);
-    for(std::size_t s = slot(key);; s = (s + 1) & (slots_.size() - 1))
+    for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
     {
-      if(slots_[s].key == key) return slots_[s].index;
-      if(slots_[s].key == 0) return -1;
+      const std::uintptr_t k = keys_[s].load(std::memory_order_relaxed);
+      if(k == key) return index_[s];
+      if(k == 0) return -1;
     }
   }
 
 private:
-  struct Slot
-  {
-    std::uintptr_t key;   // 0: empty (no element lives at address 0)
-    int index;
-  };
-
   static std::uintptr_t address(Handle h) { return reinterpret_cast<std::uintptr_t>(std::addressof(*h)); }
 
   std::size_t slot(std::uintptr_t key) const
   {
     // Fibonacci hashing of the address; the low bits are alignment.
     const std::uint64_t mixed = (static_cast<std::uint64_t>(key) >> 3) * 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(mixed >> 32) & (slots_.size() - 1);
+    return static_cast<std::size_t>(mixed >> 32) & (capacity_ - 1);
+  }
+
+  // Claims the first free slot from key's (key 0 marks a free slot: no element
+  // lives at address 0); false when the key is there already.
+  bool place(std::uintptr_t key, int index)
+  {
+    for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
+    {
+      std::uintptr_t expected = 0;
+      if(keys_[s].compare_exchange_strong(expected, key, std::memory_order_relaxed))
+      {
+        index_[s] = index;
+        return true;
+      }
+      if(expected == key) return false;
+    }
+  }
+
+  void allocate(std::size_t capacity)
+  {
+    if(capacity != capacity_)
+    {
+      keys_.reset(new std::atomic<std::uintptr_t>[capacity]);
+      index_.reset(new int[capacity]);
+      capacity_ = capacity;
+    }
+    for(std::size_t s = 0; s < capacity_; ++s) keys_[s].store(0, std::memory_order_relaxed);
   }
 
   void grow()
   {
-    std::vector<Slot> old = std::move(slots_);
-    slots_.assign(old.empty() ? 16 : 2 * old.size(), Slot{0, -1});
-    for(const Slot& x : old)
-      if(x.key != 0)
-        for(std::size_t s = slot(x.key);; s = (s + 1) & (slots_.size() - 1))
-          if(slots_[s].key == 0)
-          {
-            slots_[s] = x;
-            break;
-          }
+    std::unique_ptr<std::atomic<std::uintptr_t>[]> keys = std::move(keys_);
+    std::unique_ptr<int[]> index = std::move(index_);
+    const std::size_t old = capacity_;
+    capacity_ = 0;
+    allocate(old == 0 ? 16 : 2 * old);
+    for(std::size_t s = 0; s < old; ++s)
+    {
+      const std::uintptr_t k = keys[s].load(std::memory_order_relaxed);
+      if(k != 0) place(k, index[s]);
+    }
   }
 
-  std::vector<Slot> slots_;
+  std::unique_ptr<std::atomic<std::uintptr_t>[]> keys_;
+  std::unique_ptr<int[]> index_;
+  std::size_t capacity_ = 0;
   std::size_t size_ = 0;
 };
 

@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_SMOOTHING_MESH_H
 
 #include <CGAL/BODT_3/Vertex_star.h>
+#include <CGAL/BODT_3/group_by_key.h>
 #include <CGAL/BODT_3/tet_face_matching.h>
 
 #include <algorithm>
@@ -76,6 +77,7 @@ struct Smoothing_mesh
   std::vector<int> checked_begin;          // per vertex, into `checked_by`
   std::vector<int> checked_by;             // vertices with a hull check whose far vertex it is
   std::vector<int> neighbor;               // per cell facet (4 c + i): cell across, or -1
+  int threads = 1;                         // for build_incidences (0: every core); changes no result
 
   std::size_t number_of_vertices() const { return points.size(); }
 
@@ -92,42 +94,32 @@ struct Smoothing_mesh
   void build_incidences()
   {
     const int nv = static_cast<int>(points.size());
-    const int nc = static_cast<int>(cells.size());
     if(neighbor.size() != 4 * cells.size()) find_neighbors();
 
     // Vertex -> incident cells, with the face opposite the vertex.
-    incidence_begin.assign(nv + 1, 0);
-    for(const auto& c : cells)
-      for(int v : c) ++incidence_begin[v + 1];
-    for(int v = 0; v < nv; ++v) incidence_begin[v + 1] += incidence_begin[v];
-    incidences.resize(incidence_begin[nv]);
-    std::vector<int> fill(incidence_begin.begin(), incidence_begin.end() - 1);
-    for(int c = 0; c < nc; ++c)
+    group_by_key<Incidence>(cells.size(), points.size(), threads, [this](std::size_t c, const auto& emit) {
+      const auto& q = cells[c];
       for(int j = 0; j < 4; ++j)
       {
         const auto& o = internal::kOpposite[j];
-        incidences[fill[cells[c][j]]++] = {c, {cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]}};
+        emit(static_cast<std::size_t>(q[j]), Incidence{static_cast<int>(c), {q[o[0]], q[o[1]], q[o[2]]}});
       }
+    }, incidence_begin, incidences);
 
-    // Vertex -> boundary facets of the mesh around it, oriented outward. Counted
-    // first, then filled in the same order (re-derived after every flip pass).
-    boundary_begin.assign(nv + 1, 0);
-    auto each_boundary_corner = [&](auto&& f) {
-      for(int c = 0; c < nc; ++c)
-        for(int i = 0; i < 4; ++i)
-        {
-          if(!is_mesh_boundary(c, i)) continue;
-          // kOpposite[i] is oriented with p_i on its negative side: its normal points out.
-          const auto& o = internal::kOpposite[i];
-          const int t[3] = {cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]};
-          for(int k = 0; k < 3; ++k) f(t[k], std::array<int, 2>{t[(k + 1) % 3], t[(k + 2) % 3]});
-        }
-    };
-    each_boundary_corner([&](int v, const std::array<int, 2>&) { ++boundary_begin[v + 1]; });
-    for(int v = 0; v < nv; ++v) boundary_begin[v + 1] += boundary_begin[v];
-    boundary_facets.resize(boundary_begin[nv]);
-    fill.assign(boundary_begin.begin(), boundary_begin.end() - 1);
-    each_boundary_corner([&](int v, const std::array<int, 2>& e) { boundary_facets[fill[v]++] = e; });
+    // Vertex -> boundary facets of the mesh around it, oriented outward (re-derived
+    // after every flip pass).
+    group_by_key<std::array<int, 2>>(cells.size(), points.size(), threads, [this](std::size_t c, const auto& emit) {
+      for(int i = 0; i < 4; ++i)
+      {
+        if(!is_mesh_boundary(static_cast<int>(c), i)) continue;
+        // kOpposite[i] is oriented with p_i on its negative side: its normal points out.
+        const auto& o = internal::kOpposite[i];
+        const int t[3] = {cells[c][o[0]], cells[c][o[1]], cells[c][o[2]]};
+        for(int k = 0; k < 3; ++k)
+          emit(static_cast<std::size_t>(t[k]), std::array<int, 2>{t[(k + 1) % 3], t[(k + 2) % 3]});
+      }
+    }, boundary_begin, boundary_facets);
+    std::vector<int> fill;
 
     // Vertex -> hull checks involving it as a facet vertex, and the vertices whose
     // checks have it as far vertex.

@@ -45,6 +45,7 @@ public:
   {
     if(labels.triangulation().dimension() != 3)
       throw std::invalid_argument("B-ODT smoothing needs a triangulation of dimension 3");
+    mesh_.threads = threads;
     refresh();
   }
 
@@ -73,11 +74,8 @@ public:
       }
     cells_.clear();
     cell_index_.reset(tr.tds().number_of_cells());
-    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
-    {
-      cell_index_.insert(c, static_cast<int>(cells_.size()));
-      cells_.push_back(c);
-    }
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
+    cell_index_.insert_all(cells_, workers_);
     // Then each cell's vertices, region and neighbours: lookups only, in parallel.
     // The adjacency is the triangulation's (the view's facet k is opposite vertex k, as in the cell).
     const std::size_t nc = cells_.size();

@@ -5,6 +5,7 @@
 
 #include <CGAL/BODT_3/Smoothing_mesh.h>
 #include <CGAL/BODT_3/Tensor_voting.h>
+#include <CGAL/BODT_3/Thread_workers.h>
 
 #include <algorithm>
 #include <array>
@@ -179,9 +180,15 @@ Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Fea
     for(int v : hints.corners)
       if(v >= 0 && v < nv) is_corner[v] = 1;
 
-  Vertex_star<K> star;
-  for(int v = 0; v < nv; ++v)
+  // Vertices are independent: classified in parallel (`mesh.threads`).
+  struct Worker
   {
+    Vertex_star<K> star;
+    std::size_t non_manifold = 0;
+  };
+  Thread_workers<Worker> workers(mesh.threads);
+  workers.for_each(0, nv, [&](Worker& w, int v) {
+    Vertex_star<K>& star = w.star;
     // Subdomains around v, and the boundary of each one's part of the star.
     std::map<int, std::vector<std::array<int, 2>>> side_boundary;
     for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
@@ -200,15 +207,15 @@ Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Fea
           if(f[j] == v) facets.push_back({f[(j + 1) % 3], f[(j + 2) % 3]});
       }
     }
-    if(side_boundary.empty()) continue;                          // rule 1
+    if(side_boundary.empty()) return;                            // rule 1
     const bool interior = side_boundary.size() == 1 && side_boundary.begin()->second.empty();
-    if(!interior && !opt.move_boundary) continue;
+    if(!interior && !opt.move_boundary) return;
     bool manifold = true;
     for(const auto& side : side_boundary) manifold = manifold && internal::is_one_cycle(side.second);
     if(!manifold)                                                // rule 2
     {
-      ++out.non_manifold;
-      continue;
+      ++w.non_manifold;
+      return;
     }
 
     const signed char dim = v < static_cast<int>(hints.dimension.size()) ? hints.dimension[v] : -1;
@@ -251,7 +258,8 @@ Vertex_classification classify_vertices(const Smoothing_mesh<K>& mesh, const Fea
         kind = Vertex_kind::feature;
     }
     out.kind[v] = kind;
-  }
+  }, 256);
+  workers.each_worker([&out](const Worker& w) { out.non_manifold += w.non_manifold; });
   return out;
 }
 

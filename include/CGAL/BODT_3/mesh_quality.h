@@ -156,30 +156,38 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
   for(std::size_t t = 0; t < mesh.tets.size(); ++t)
     if(mesh.in_mesh(t, all_zero)) measured.push_back(t);
   std::vector<char> used(mesh.points.size(), 0);
-  // A face is on the boundary or an interface unless two mesh tets of one label share it.
+  // A face is on the boundary or an interface unless two mesh tets of one label
+  // share it; each vertex looks at the faces around it (in parallel).
   std::vector<char> on_boundary(mesh.points.size(), 0);
+  Thread_workers<char> workers(opt.threads);
   {
     std::vector<std::array<int, 4>> some;   // a copy only when some tetrahedra are not measured
     if(measured.size() < mesh.tets.size())
       for(std::size_t t : measured) some.push_back(mesh.tets[t]);
     const auto& cells = measured.size() < mesh.tets.size() ? some : mesh.tets;
     const Tet_face_matching faces(cells, mesh.points.size(), opt.threads);
-    for(std::size_t c = 0; c < cells.size(); ++c)
-      for(int i = 0; i < 4; ++i)
+    workers.for_each(0, static_cast<int>(mesh.points.size()), [&](char&, int v) {
+      const int first = faces.vertex_cells_begin[v], last = faces.vertex_cells_begin[v + 1];
+      used[static_cast<std::size_t>(v)] = first < last ? 1 : 0;
+      for(int k = first; k < last && !on_boundary[static_cast<std::size_t>(v)]; ++k)
       {
-        const int m = faces.match[4 * c + static_cast<std::size_t>(i)];
-        if(m >= 0 && mesh.tet_labels[measured[static_cast<std::size_t>(m / 4)]] == mesh.tet_labels[measured[c]])
-          continue;
-        for(int k = 1; k < 4; ++k) on_boundary[static_cast<std::size_t>(cells[c][(i + k) & 3])] = 1;
+        const auto c = static_cast<std::size_t>(faces.vertex_cells[k]);
+        for(int i = 0; i < 4; ++i)
+        {
+          const int m = faces.match[4 * c + static_cast<std::size_t>(i)];
+          if(cells[c][i] == v ||
+             (m >= 0 && mesh.tet_labels[measured[static_cast<std::size_t>(m / 4)]] == mesh.tet_labels[measured[c]]))
+            continue;
+          on_boundary[static_cast<std::size_t>(v)] = 1;
+          break;
+        }
       }
+    }, 1024);
   }
-  for(std::size_t t : measured)
-    for(int v : mesh.tets[t]) used[static_cast<std::size_t>(v)] = 1;
   // Blocks of a fixed size, merged in order: the sums do not depend on the threads.
   constexpr std::size_t block = 1 << 14;
   const int blocks = static_cast<int>((measured.size() + block - 1) / block);
   std::vector<Quality_accumulator> parts(static_cast<std::size_t>(blocks), Quality_accumulator(opt));
-  Thread_workers<char> workers(opt.threads);
   workers.for_each(0, blocks, [&](char&, int b) {
     Quality_accumulator& acc = parts[static_cast<std::size_t>(b)];
     const std::size_t end = std::min(measured.size(), (static_cast<std::size_t>(b) + 1) * block);

@@ -5,6 +5,7 @@
 
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Smoothing_sweep.h>
+#include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/Triangulation_view.h>
 #include <CGAL/BODT_3/Vertex_classification.h>
 #include <CGAL/BODT_3/flip_pass.h>
@@ -84,13 +85,25 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   result.used_tensor_voting = cls.used_tensor_voting;
   visitor.after_classification(result);
 
+  // Whole-mesh scans run in blocks of cells, merged in block order: the same
+  // result on any number of threads.
+  Thread_workers<char> workers(opt.threads);
+  constexpr int block = 1 << 14;
+  auto cell_blocks = [&mesh] { return static_cast<int>((mesh.cells.size() + block - 1) / block); };
+  auto for_cell_blocks = [&](const auto& f) {
+    workers.for_each(0, cell_blocks(), [&](char&, int b) {
+      const std::size_t end = std::min(mesh.cells.size(), (static_cast<std::size_t>(b) + 1) * block);
+      for(std::size_t c = static_cast<std::size_t>(b) * block; c < end; ++c)
+        if(mesh.in_mesh[c]) f(b, c);
+    }, 1);
+  };
+  std::vector<Dihedral_bounds> block_bounds(cell_blocks(), Dihedral_bounds::empty());
+  for_cell_blocks([&](int b, std::size_t c) {
+    const auto& q = mesh.cells[c];
+    block_bounds[b].include(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]);
+  });
   Dihedral_bounds bounds = Dihedral_bounds::empty();
-  for(std::size_t c = 0; c < mesh.cells.size(); ++c)
-    if(mesh.in_mesh[c])
-    {
-      const auto& q = mesh.cells[c];
-      bounds.include(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]);
-    }
+  for(const Dihedral_bounds& b : block_bounds) bounds.include(b);
 
   Smoothing_sweep<typename Triangulation_view<Labels>::Kernel> sweep(mesh, cls, opt, bounds);
   auto vertex_id = [&view](typename Labels::Vertex_handle v) { return view.index(v); };
@@ -121,10 +134,13 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   };
   // The last change within one edge of each vertex, for a pass's history.
   auto stamp_regions = [&](Flip_history& h) {
-    h.region_stamp = changed_at;
-    for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+    h.region_stamp.resize(mesh.number_of_vertices());
+    workers.for_each(0, static_cast<int>(mesh.number_of_vertices()), [&](char&, int v) {
+      std::size_t stamp = changed_at[v];
       for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
-        for(int u : mesh.incidences[k].face) h.region_stamp[v] = std::max(h.region_stamp[v], changed_at[u]);
+        for(int u : mesh.incidences[k].face) stamp = std::max(stamp, changed_at[u]);
+      h.region_stamp[v] = stamp;
+    }, 4096);
   };
   // After the triangulation changed: re-read it, classify new vertices, mark stars changed.
   auto reread = [&]() {
@@ -156,10 +172,14 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   // With the guard on, the sweep knows every mesh cell's minimum dihedral sine:
   // the passes start from the cells below their thresholds.
   const bool guard_knows = opt.quality_guard && opt.quality_measure == Quality_measure::min_dihedral_sine;
+  std::vector<std::vector<typename Labels::Cell_handle>> block_candidates;
   auto cells_below = [&](double threshold) {
+    block_candidates.assign(cell_blocks(), {});
+    for_cell_blocks([&](int b, std::size_t c) {
+      if(sweep.cell_quality(static_cast<int>(c)) < threshold) block_candidates[b].push_back(view.cells()[c]);
+    });
     candidates.clear();
-    for(std::size_t c = 0; c < mesh.cells.size(); ++c)
-      if(mesh.in_mesh[c] && sweep.cell_quality(static_cast<int>(c)) < threshold) candidates.push_back(view.cells()[c]);
+    for(const auto& found : block_candidates) candidates.insert(candidates.end(), found.begin(), found.end());
   };
 
   const bool unlimited = opt.max_iteration_number == 0;

@@ -117,6 +117,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   timer.start();
   // The classification reads the file's own feature information.
   Smoothing_mesh<K> flat;
+  flat.threads = options.threads;
   flat.points = tm.points;
   flat.cells = tm.tets;
   const bool all_zero = tm.all_labels_zero();
@@ -178,7 +179,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   Smoothing_result r = optimize_mesh(labels, classify, options, counting);
   counting.fill(r);
   const double back = timer.time();
-  update_tet_mesh(tm, c3t3, handles);
+  update_tet_mesh(tm, c3t3, handles, options.threads);
   for(int& l : tm.tet_labels)
   {
     const auto it = constraints.file_label.find(l);

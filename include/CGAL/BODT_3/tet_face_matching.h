@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_TET_FACE_MATCHING_H
 
 #include <CGAL/BODT_3/Thread_workers.h>
+#include <CGAL/BODT_3/group_by_key.h>
 
 #include <algorithm>
 #include <array>
@@ -39,16 +40,9 @@ struct Tet_face_matching
     const std::size_t nc = cells.size();
     std::vector<int>& begin = vertex_cells_begin;
     std::vector<int>& around = vertex_cells;
-    begin.assign(number_of_points + 1, 0);
-    around.resize(4 * nc);
-    for(const auto& c : cells)
-      for(int v : c) ++begin[static_cast<std::size_t>(v) + 1];
-    for(std::size_t v = 0; v < number_of_points; ++v) begin[v + 1] += begin[v];
-    {
-      std::vector<int> fill(begin.begin(), begin.end() - 1);
-      for(std::size_t c = 0; c < nc; ++c)
-        for(int v : cells[c]) around[static_cast<std::size_t>(fill[v]++)] = static_cast<int>(c);
-    }
+    group_by_key<int>(nc, number_of_points, threads, [&cells](std::size_t c, const auto& emit) {
+      for(int v : cells[c]) emit(static_cast<std::size_t>(v), static_cast<int>(c));
+    }, begin, around);
 
     // Each face is matched at its smallest vertex: the faces of the cells around a
     // vertex that have it as smallest vertex, sorted by their two other vertices,

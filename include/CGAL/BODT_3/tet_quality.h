@@ -196,6 +196,15 @@ public:
     safe_ = safe_sine();
   }
 
+  /// Widens the bounds to include other bounds (those of other tetrahedra): the
+  /// result does not depend on how the tetrahedra were grouped.
+  void include(const Dihedral_bounds& other)
+  {
+    cos_smallest_ = std::max(cos_smallest_, other.cos_smallest_);
+    cos_largest_ = std::min(cos_largest_, other.cos_largest_);
+    safe_ = safe_sine();
+  }
+
   /// A tetrahedron whose minimum dihedral sine is at least this has every angle
   /// within the bounds, so `contains` needs no cosines for it.
   double safe_sine() const

@@ -3,9 +3,13 @@
 #ifndef CGAL_BODT_3_IO_OUTPUT_BUFFER_H
 #define CGAL_BODT_3_IO_OUTPUT_BUFFER_H
 
+#include <CGAL/BODT_3/Thread_workers.h>
+
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <ostream>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <vector>
@@ -98,6 +102,69 @@ private:
   std::size_t n_ = 0;
   std::size_t flushed_ = 0;
 };
+
+/// Text formatted in memory, with `Output_buffer`'s calls, for `put_rows`.
+class Text_block
+{
+public:
+  Text_block& put(std::string_view s)
+  {
+    text_.append(s);
+    return *this;
+  }
+
+  Text_block& put(char c)
+  {
+    text_.push_back(c);
+    return *this;
+  }
+
+  template <class Int, std::enable_if_t<std::is_integral_v<Int>, int> = 0>
+  Text_block& put_int(Int v)
+  {
+    char digits[24];
+    text_.append(digits, std::to_chars(digits, digits + sizeof digits, v).ptr);
+    return *this;
+  }
+
+  Text_block& put_double(double v)
+  {
+    char digits[32];
+    text_.append(digits, std::to_chars(digits, digits + sizeof digits, v).ptr);
+    return *this;
+  }
+
+  std::string_view text() const { return text_; }
+  void clear() { text_.clear(); }
+
+private:
+  std::string text_;
+};
+
+/// Writes rows 0 to n - 1 to `out`, `row(block, i)` formatting row i into a
+/// `Text_block`: blocks of rows are formatted on `threads` threads (0: all
+/// cores), a few at a time, and written in order, so the bytes are those of one
+/// loop over the rows.
+template <class Row>
+void put_rows(Output_buffer& out, std::size_t n, int threads, const Row& row)
+{
+  constexpr std::size_t rows_per_block = 1 << 13;
+  const std::size_t blocks = (n + rows_per_block - 1) / rows_per_block;
+  Thread_workers<char> workers(threads);
+  const std::size_t window = 4 * static_cast<std::size_t>(workers.threads());
+  std::vector<Text_block> text(window);
+  for(std::size_t first = 0; first < blocks; first += window)
+  {
+    const std::size_t count = std::min(window, blocks - first);
+    workers.for_each(0, static_cast<int>(count), [&](char&, int k) {
+      Text_block& block = text[static_cast<std::size_t>(k)];
+      block.clear();
+      const std::size_t begin = (first + static_cast<std::size_t>(k)) * rows_per_block;
+      for(std::size_t i = begin; i < std::min(n, begin + rows_per_block); ++i) row(block, i);
+    }, 1);
+    for(std::size_t k = 0; k < count; ++k) out.put(text[k].text());
+  }
+}
 
 } // namespace internal
 } // namespace BODT_3

@@ -3,15 +3,20 @@
 #ifndef CGAL_BODT_3_IO_TOKEN_READER_H
 #define CGAL_BODT_3_IO_TOKEN_READER_H
 
+#include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
 
+#include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 namespace CGAL {
 namespace BODT_3 {
@@ -222,6 +227,72 @@ public:
     if(!std::isfinite(v))
       error(std::string(what) + " is '" + printable(t) + "', not a finite number");
     return v;
+  }
+
+  /// Reads `n` entries of `tokens` tokens each, on `threads` threads, when they are
+  /// laid out one entry per line from the line after the current one (as every
+  /// writer lays them out): `row(i, line, fields)` gets entry i, the line it is on
+  /// and its `tokens` token views, and returns false when any is not what the
+  /// caller expects. Returns false, having consumed nothing, when the layout is
+  /// another (entries across lines, blank or comment lines) or a row was refused:
+  /// the caller then reads the entries token by token, which yields the same values
+  /// and reports any error exactly. On success the reader is past the last entry.
+  template <class Row>
+  bool read_rows(std::size_t n, std::size_t tokens, int threads, const Row& row)
+  {
+    constexpr std::size_t most_tokens = 8;
+    if(n == 0 || tokens == 0 || tokens > most_tokens) return false;
+    std::size_t p = pos_;
+    for(; p < text_.size() && text_[p] != '\n'; ++p)
+      if(!is_space(text_[p])) return false;
+    if(p >= text_.size()) return false;
+    ++p;
+    // Where every block of rows starts: found with memchr, which runs at memory speed.
+    constexpr std::size_t rows_per_block = 4096;
+    std::vector<std::size_t> block_start;
+    block_start.reserve(n / rows_per_block + 1);
+    std::size_t last_end = p;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      if(i % rows_per_block == 0) block_start.push_back(p);
+      const void* nl = p < text_.size() ? std::memchr(text_.data() + p, '\n', text_.size() - p) : nullptr;
+      last_end = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text_.data()) : text_.size();
+      if(!nl && i + 1 < n) return false;
+      p = last_end + 1;
+    }
+    const long first_line = line_ + 1;
+    std::atomic<bool> refused{false};
+    Thread_workers<char>(threads).for_each(0, static_cast<int>(block_start.size()), [&](char&, int b) {
+      std::size_t q = block_start[static_cast<std::size_t>(b)];
+      const std::size_t end_row = std::min(n, (static_cast<std::size_t>(b) + 1) * rows_per_block);
+      std::string_view fields[most_tokens];
+      for(std::size_t i = static_cast<std::size_t>(b) * rows_per_block; i < end_row; ++i)
+      {
+        if(refused.load(std::memory_order_relaxed)) return;
+        std::size_t found = 0;
+        while(q < text_.size() && text_[q] != '\n')
+        {
+          if(is_space(text_[q])) { ++q; continue; }
+          const std::size_t begin = q;
+          while(q < text_.size() && !is_space(text_[q])) ++q;
+          if(found == tokens || q - begin > max_token) { found = tokens + 1; break; }
+          fields[found++] = text_.substr(begin, q - begin);
+        }
+        const char lead = found > 0 ? fields[0][0] : '\0';
+        const bool word = (lead >= 'a' && lead <= 'z') || (lead >= 'A' && lead <= 'Z') || lead == comment_;
+        if(found != tokens || word || !row(i, first_line + static_cast<long>(i), fields))
+        {
+          refused.store(true, std::memory_order_relaxed);
+          return;
+        }
+        ++q;
+      }
+    }, 1);
+    if(refused) return false;
+    pos_ = last_end;
+    line_ = first_line + static_cast<long>(n) - 1;
+    token_line_ = line_;
+    return true;
   }
 
   [[noreturn]] void error(const std::string& message) const

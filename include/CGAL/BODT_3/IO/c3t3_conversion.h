@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <iostream>
 #include <iterator>
@@ -170,26 +171,40 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
   if(mesh.tet_labels.size() != nt || mesh.triangle_labels.size() != mesh.triangles.size() ||
      mesh.edge_labels.size() != mesh.edges.size())
     fail("tetrahedra, triangles and edges need one label each");
-  std::vector<char> used(n, 0);
-  for(std::size_t t = 0; t < nt; ++t)
-  {
+  // Checked in parallel blocks; the first tetrahedron that fails is reported.
+  auto problem = [&](std::size_t t) -> std::string {
     const auto& q = mesh.tets[t];
     for(int k = 0; k < 4; ++k)
     {
       if(q[k] < 0 || q[k] >= n)
-        fail("tetrahedron " + std::to_string(t + 1) + " refers to vertex " + std::to_string(q[k] + 1) +
-             ", but there are " + std::to_string(n) + " vertices");
+        return "tetrahedron " + std::to_string(t + 1) + " refers to vertex " + std::to_string(q[k] + 1) +
+               ", but there are " + std::to_string(n) + " vertices";
       for(int j = 0; j < k; ++j)
-        if(q[j] == q[k]) fail("tetrahedron " + std::to_string(t + 1) + " uses a vertex twice");
-      used[q[k]] = 1;
+        if(q[j] == q[k]) return "tetrahedron " + std::to_string(t + 1) + " uses a vertex twice";
     }
     // Flat tetrahedra are kept, as the readers keep them; inverted ones would turn
     // the triangulation inside out.
     if(CGAL::orientation(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]) ==
        CGAL::NEGATIVE)
-      fail("tetrahedron " + std::to_string(t + 1) +
-           " is negatively oriented; a triangulation needs positively oriented cells");
-  }
+      return "tetrahedron " + std::to_string(t + 1) +
+             " is negatively oriented; a triangulation needs positively oriented cells";
+    return std::string();
+  };
+  const int threads = faces ? faces->threads : 1;
+  constexpr std::size_t block = 1 << 14;
+  const int blocks = static_cast<int>((nt + block - 1) / block);
+  auto block_end = [nt](int b) { return std::min(nt, (static_cast<std::size_t>(b) + 1) * block); };
+  std::vector<std::size_t> first_bad(static_cast<std::size_t>(blocks), nt);
+  Thread_workers<char> workers(threads);
+  workers.for_each(0, blocks, [&](char&, int b) {
+    for(std::size_t t = static_cast<std::size_t>(b) * block; t < block_end(b); ++t)
+      if(!problem(t).empty()) { first_bad[static_cast<std::size_t>(b)] = t; return; }
+  }, 1);
+  for(std::size_t t : first_bad)
+    if(t < nt) fail(problem(t));
+  std::vector<char> used(n, 0);
+  for(const auto& q : mesh.tets)
+    for(int v : q) used[v] = 1;
 
   C3T3 result;
   Tr& tr = result.triangulation();
@@ -216,26 +231,52 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
     fail("face (" + face_to_string(oriented_face(mesh.tets[t], static_cast<int>(faces->crowded_face % 4))) +
          ") belongs to three or more tetrahedra");
   }
+  // Two cells on one face must induce opposite orientations on it.
+  std::fill(first_bad.begin(), first_bad.end(), nt);
+  workers.for_each(0, blocks, [&](char&, int b) {
+    for(std::size_t t = static_cast<std::size_t>(b) * block; t < block_end(b); ++t)
+      for(int i = 0; i < 4; ++i)
+      {
+        const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
+        const auto other = static_cast<std::size_t>(m / 4);
+        if(m < 0 || other > t) continue;
+        if(smallest_first(oriented_face(mesh.tets[t], i)) == smallest_first(oriented_face(mesh.tets[other], m % 4)))
+        {
+          first_bad[static_cast<std::size_t>(b)] = t;
+          return;
+        }
+      }
+  }, 1);
+  for(std::size_t t : first_bad)
+    for(int i = 0; t < nt && i < 4; ++i)
+    {
+      const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
+      const auto other = static_cast<std::size_t>(m / 4);
+      const std::array<int, 3> f = oriented_face(mesh.tets[t], i);
+      if(m >= 0 && other < t && smallest_first(f) == smallest_first(oriented_face(mesh.tets[other], m % 4)))
+        fail("tetrahedra " + std::to_string(other + 1) + " and " + std::to_string(t + 1) +
+             " lie on the same side of their common face (" + face_to_string(f) + ")");
+    }
+  // The cells, one after the other (the container is not thread-safe); then each
+  // cell's neighbours and each vertex's first cell, written by their owner in parallel.
   std::vector<Cell_handle> cells(nt);
   for(std::size_t t = 0; t < nt; ++t)
   {
     const auto& q = mesh.tets[t];
-    const Cell_handle c = tds.create_cell(vh[q[0]], vh[q[1]], vh[q[2]], vh[q[3]]);
-    cells[t] = c;
-    for(int k = 0; k < 4; ++k)
-      if(vh[q[k]]->cell() == Cell_handle()) vh[q[k]]->set_cell(c);
-    for(int i = 0; i < 4; ++i)
-    {
-      const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
-      const auto other = static_cast<std::size_t>(m / 4);
-      if(m < 0 || other > t) continue;
-      const std::array<int, 3> f = oriented_face(q, i);
-      if(smallest_first(f) == smallest_first(oriented_face(mesh.tets[other], m % 4)))
-        fail("tetrahedra " + std::to_string(other + 1) + " and " + std::to_string(t + 1) +
-             " lie on the same side of their common face (" + face_to_string(f) + ")");
-      tds.set_adjacency(c, i, cells[other], m % 4);
-    }
+    cells[t] = tds.create_cell(vh[q[0]], vh[q[1]], vh[q[2]], vh[q[3]]);
   }
+  workers.for_each(0, blocks, [&](char&, int b) {
+    for(std::size_t t = static_cast<std::size_t>(b) * block; t < block_end(b); ++t)
+      for(int i = 0; i < 4; ++i)
+      {
+        const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
+        if(m >= 0) cells[t]->set_neighbor(i, cells[static_cast<std::size_t>(m / 4)]);
+      }
+  }, 1);
+  workers.for_each(0, n, [&](char&, int v) {
+    const int k = faces->vertex_cells_begin[v];
+    if(k < faces->vertex_cells_begin[v + 1]) vh[v]->set_cell(cells[static_cast<std::size_t>(faces->vertex_cells[k])]);
+  }, 4096);
 
   // An infinite cell on each boundary face: the finite cell's vertices with the
   // infinite vertex in place of the far one and two others swapped, so that both
@@ -290,7 +331,7 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
     std::vector<int> stack;
     int first_bad = -1;
   };
-  Thread_workers<Star_worker> star_workers(faces->threads);
+  Thread_workers<Star_worker> star_workers(threads);
   star_workers.for_each(0, n, [&](Star_worker& w, int v) {
     const int b = faces->vertex_cells_begin[v], e = faces->vertex_cells_begin[v + 1];
     if(b == e) return;
@@ -327,13 +368,19 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
   for(int i = 0; i < n; ++i)
     if(used[i]) result.set_dimension(vh[i], 3);
   const bool all_zero = mesh.all_labels_zero();
+  auto subdomain = [&](std::size_t t) { return Subdomain_index(all_zero ? 1 : mesh.tet_labels[t]); };
   for(std::size_t t = 0; t < nt; ++t)
-  {
-    if(!mesh.in_mesh(t, all_zero)) continue;
-    const Subdomain_index s(all_zero ? 1 : mesh.tet_labels[t]);
-    result.add_to_complex(cells[t], s);
-    for(int k = 0; k < 4; ++k) set_vertex_index(cells[t]->vertex(k), s);
-  }
+    if(mesh.in_mesh(t, all_zero)) result.add_to_complex(cells[t], subdomain(t));
+  // A vertex's index: the subdomain of its last cell in the complex.
+  workers.for_each(0, n, [&](char&, int v) {
+    for(int k = faces->vertex_cells_begin[v + 1]; k-- > faces->vertex_cells_begin[v];)
+    {
+      const auto t = static_cast<std::size_t>(faces->vertex_cells[k]);
+      if(!mesh.in_mesh(t, all_zero)) continue;
+      set_vertex_index(vh[v], subdomain(t));
+      break;
+    }
+  }, 4096);
 
   std::unordered_map<std::array<int, 3>, int, internal::Sorted_triple_hash> listed;
   int next_patch = 1;
@@ -343,13 +390,28 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
       listed.emplace(sorted(mesh.triangles[f]), mesh.triangle_labels[f]);
       next_patch = (std::max)(next_patch, mesh.triangle_labels[f] + 1);
     }
-  std::map<std::pair<Subdomain_index, Subdomain_index>, Surface_patch_index> derived;
+  // The faces between different subdomains (or a subdomain and the outside), each
+  // from the first cell that has it, found from the flat arrays in parallel blocks.
+  std::vector<Subdomain_index> label(nt);
   for(std::size_t t = 0; t < nt; ++t)
-    for(int i = 0; i < 4; ++i)
+    if(mesh.in_mesh(t, all_zero)) label[t] = subdomain(t);
+  std::vector<std::vector<std::pair<std::size_t, int>>> block_faces(static_cast<std::size_t>(blocks));
+  workers.for_each(0, blocks, [&](char&, int b) {
+    for(std::size_t t = static_cast<std::size_t>(b) * block; t < block_end(b); ++t)
+      for(int i = 0; i < 4; ++i)
+      {
+        const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
+        const Subdomain_index other = m < 0 ? Subdomain_index() : label[static_cast<std::size_t>(m / 4)];
+        if(!(label[t] == other) && (m < 0 || static_cast<std::size_t>(m / 4) > t))
+          block_faces[static_cast<std::size_t>(b)].emplace_back(t, i);
+      }
+  }, 1);
+  std::map<std::pair<Subdomain_index, Subdomain_index>, Surface_patch_index> derived;
+  for(const auto& found : block_faces)
+    for(const auto& [t, i] : found)
     {
       const Cell_handle c = cells[t];
-      const Subdomain_index s0 = result.subdomain_index(c), s1 = result.subdomain_index(c->neighbor(i));
-      if(s0 == s1 || result.is_in_complex(c, i)) continue;
+      const Subdomain_index s0 = label[t], s1 = result.subdomain_index(c->neighbor(i));
       const std::pair<Subdomain_index, Subdomain_index> sides = (std::minmax)(s0, s1);
       Surface_patch_index patch;
       if constexpr(Is_pair<Surface_patch_index>::value)
@@ -525,8 +587,10 @@ using Tet_mesh_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tet_mesh_triangula
 ///    `c3t3_to_tet_mesh` orients them;
 ///  - edges: the input's edges, each replaced in place by the curve edges it was
 ///    split into; ridges follow their edges; corners and required vertices stay.
+/// `threads` (as `Smoothing_options::threads`) changes nothing in the result.
 template <class C3T3>
-void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typename C3T3::Vertex_handle>& handles)
+void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typename C3T3::Vertex_handle>& handles,
+                     int threads = 1)
 {
   using namespace internal_c3t3;
   using Tr = typename C3T3::Triangulation;
@@ -538,9 +602,10 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
 
   Handle_index_map<Vertex_handle> index_map;
   index_map.reset(tr.number_of_vertices());
-  auto index = [&index_map](Vertex_handle v) {
+  const char* const unindexed_vertex = "update_tet_mesh: a vertex of the triangulation is not indexed";
+  auto index = [&](Vertex_handle v) {
     const int i = index_map.find(v);
-    if(i < 0) throw std::out_of_range("update_tet_mesh: a vertex of the triangulation is not indexed");
+    if(i < 0) throw std::out_of_range(unindexed_vertex);
     return i;
   };
   for(std::size_t i = 0; i < handles.size(); ++i)
@@ -558,14 +623,24 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
       mesh.vertex_refs.push_back(0);
     }
 
-  mesh.tets.clear();
-  mesh.tet_labels.clear();
-  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
-  {
-    mesh.tets.push_back({index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)),
-                         index(c->vertex(3))});
-    mesh.tet_labels.push_back(all_zero || !c3t3.is_in_complex(c) ? 0 : static_cast<int>(c3t3.subdomain_index(c)));
-  }
+  // The cells in the triangulation's order, then their vertex indices (lookups
+  // only) in parallel.
+  std::vector<typename Tr::Cell_handle> finite;
+  finite.reserve(tr.number_of_cells());   // not number_of_finite_cells(), which counts them one by one
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) finite.push_back(c);
+  mesh.tets.resize(finite.size());
+  mesh.tet_labels.resize(finite.size());
+  std::atomic<bool> unindexed{false};
+  Thread_workers<char>(threads).for_each(0, static_cast<int>(finite.size()), [&](char&, int t) {
+    const auto c = finite[t];
+    for(int k = 0; k < 4; ++k)
+    {
+      mesh.tets[t][k] = index_map.find(c->vertex(k));
+      if(mesh.tets[t][k] < 0) unindexed.store(true, std::memory_order_relaxed);
+    }
+    mesh.tet_labels[t] = all_zero || !c3t3.is_in_complex(c) ? 0 : static_cast<int>(c3t3.subdomain_index(c));
+  }, 4096);
+  if(unindexed) throw std::out_of_range(unindexed_vertex);
 
   if(!mesh.triangles.empty())
   {

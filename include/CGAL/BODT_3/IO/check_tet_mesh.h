@@ -4,6 +4,8 @@
 #define CGAL_BODT_3_IO_CHECK_TET_MESH_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/Thread_workers.h>
+#include <CGAL/BODT_3/group_by_key.h>
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <cstdint>
 #include <tuple>
 #include <cmath>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <unordered_map>
@@ -58,8 +61,9 @@ inline std::string tet_to_string(const std::array<int, 4>& t)
 /// three or more tetrahedra, no flat tetrahedron (whatever its label: label 0 cells
 /// close a mesh and must stay valid too), one orientation for all tetrahedra. When
 /// every tetrahedron is negatively oriented (some meshers write them so), all are
-/// reoriented and a warning goes to `warnings`.
-inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::ostream& warnings)
+/// reoriented and a warning goes to `warnings`. `threads` (0: all cores) changes
+/// nothing in the outcome.
+inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::ostream& warnings, int threads = 1)
 {
   const std::string& file = src.file;
   auto vline = [&](std::size_t i) { return i < src.vertex_lines.size() ? src.vertex_lines[i] : 0L; };
@@ -125,31 +129,39 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
   // sorted, which is many times faster than hashing every face.
   {
     const std::size_t nt = mesh.tets.size();
-    std::vector<std::size_t> start(static_cast<std::size_t>(n) + 1, 0);
-    for(const auto& c : mesh.tets)
-      for(int k = 0; k < 4; ++k)
-        ++start[static_cast<std::size_t>(std::min({c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]})) + 1];
-    for(std::size_t v = 0; v < static_cast<std::size_t>(n); ++v) start[v + 1] += start[v];
     struct Face { int b, c, opposite; std::uint32_t tet; };
-    std::vector<Face> faces(4 * nt);
-    {
-      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-      for(std::size_t t = 0; t < nt; ++t)
+    std::vector<int> start;
+    std::vector<Face> faces;
+    group_by_key<Face>(nt, static_cast<std::size_t>(n), threads, [&mesh](std::size_t t, const auto& emit) {
+      const auto& c = mesh.tets[t];
+      for(int k = 0; k < 4; ++k)
       {
-        const auto& c = mesh.tets[t];
-        for(int k = 0; k < 4; ++k)
-        {
-          int f[3] = {c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]};
-          std::sort(f, f + 3);
-          faces[fill[static_cast<std::size_t>(f[0])]++] = {f[1], f[2], c[k], static_cast<std::uint32_t>(t)};
-        }
+        int f[3] = {c[(k + 1) % 4], c[(k + 2) % 4], c[(k + 3) % 4]};
+        std::sort(f, f + 3);
+        emit(static_cast<std::size_t>(f[0]), Face{f[1], f[2], c[k], static_cast<std::uint32_t>(t)});
       }
-    }
-    // Per face group (sorted by tet), the first repeat and the first third tet, in file order.
-    std::size_t repeat = nt, repeated = 0, third = nt, first_of_third = 0;
-    std::array<int, 3> third_face{};
-    for(std::size_t a = 0; a < static_cast<std::size_t>(n); ++a)
+    }, start, faces);
+    // Per face group (sorted by tet), the first repeat and the first third tet, in
+    // file order; buckets in parallel, each worker keeping the first it found
+    // (ties between buckets go to the smaller vertex, as a sequential scan would).
+    struct Found
     {
+      std::size_t repeat = std::numeric_limits<std::size_t>::max(), repeated = 0;
+      std::size_t third = std::numeric_limits<std::size_t>::max(), first_of_third = 0;
+      std::size_t repeat_bucket = 0, third_bucket = 0;
+      std::array<int, 3> third_face{};
+    };
+    auto keep_repeat = [](Found& f, std::size_t t, std::size_t other, std::size_t a) {
+      if(std::make_pair(t, a) < std::make_pair(f.repeat, f.repeat_bucket))
+      {
+        f.repeat = t;
+        f.repeated = other;
+        f.repeat_bucket = a;
+      }
+    };
+    Thread_workers<Found> workers(threads);
+    workers.for_each(0, n, [&](Found& found, int va) {
+      const auto a = static_cast<std::size_t>(va);
       auto begin = faces.begin() + static_cast<std::ptrdiff_t>(start[a]);
       auto end = faces.begin() + static_cast<std::ptrdiff_t>(start[a + 1]);
       std::sort(begin, end, [](const Face& x, const Face& y) {
@@ -161,11 +173,7 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
         while(h != end && h->b == g->b && h->c == g->c) ++h;
         if(h - g == 2)
         {
-          if(g->opposite == (g + 1)->opposite && (g + 1)->tet < repeat)
-          {
-            repeat = (g + 1)->tet;
-            repeated = g->tet;
-          }
+          if(g->opposite == (g + 1)->opposite) keep_repeat(found, (g + 1)->tet, g->tet, a);
         }
         else if(h - g > 2)
         {
@@ -175,23 +183,37 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
             return std::tie(x.opposite, x.tet) < std::tie(y.opposite, y.tet);
           });
           for(std::size_t i = 1; i < group.size(); ++i)
-            if(group[i].opposite == group[i - 1].opposite && group[i].tet < repeat)
+            if(group[i].opposite == group[i - 1].opposite)
             {
               std::size_t first = i - 1;
               while(first > 0 && group[first - 1].opposite == group[i].opposite) --first;
-              repeat = group[i].tet;
-              repeated = group[first].tet;
+              keep_repeat(found, group[i].tet, group[first].tet, a);
             }
         }
-        if(h - g >= 3 && (g + 2)->tet < third)
+        if(h - g >= 3 && std::make_pair(std::size_t((g + 2)->tet), a) < std::make_pair(found.third, found.third_bucket))
         {
-          third = (g + 2)->tet;
-          first_of_third = g->tet;
-          third_face = {static_cast<int>(a), g->b, g->c};
+          found.third = (g + 2)->tet;
+          found.first_of_third = g->tet;
+          found.third_bucket = a;
+          found.third_face = {static_cast<int>(a), g->b, g->c};
         }
         g = h;
       }
-    }
+    }, 1024);
+    Found first;
+    workers.each_worker([&](const Found& f) {
+      keep_repeat(first, f.repeat, f.repeated, f.repeat_bucket);
+      if(std::make_pair(f.third, f.third_bucket) < std::make_pair(first.third, first.third_bucket))
+      {
+        first.third = f.third;
+        first.first_of_third = f.first_of_third;
+        first.third_bucket = f.third_bucket;
+        first.third_face = f.third_face;
+      }
+    });
+    const std::size_t repeat = first.repeat, repeated = first.repeated, third = first.third;
+    const std::size_t first_of_third = first.first_of_third;
+    const std::array<int, 3> third_face = first.third_face;
     if(repeat < nt)
       throw Mesh_io_error(file, src.tet_line(repeat),
                           "tetrahedron " + std::to_string(repeat + 1) + " (" +
@@ -208,21 +230,42 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
                               "belongs to at most two tetrahedra");
   }
 
-  // Orientation, decided by exact predicates.
-  std::size_t positive = 0, negative = 0;
-  std::size_t first_positive = 0, first_negative = 0;
-  for(std::size_t t = 0; t < mesh.tets.size(); ++t)
+  // Orientation, decided by exact predicates, in blocks merged in order.
+  struct Orientations
   {
-    const auto& c = mesh.tets[t];
-    const CGAL::Orientation o = CGAL::orientation(mesh.points[c[0]], mesh.points[c[1]],
-                                                  mesh.points[c[2]], mesh.points[c[3]]);
-    if(o == CGAL::POSITIVE) { if(positive++ == 0) first_positive = t; }
-    else if(o == CGAL::NEGATIVE) { if(negative++ == 0) first_negative = t; }
-    else
-      throw Mesh_io_error(file, src.tet_line(t),
-                          "tetrahedron " + std::to_string(t + 1) + " (" + internal::tet_to_string(c) +
+    std::size_t positive = 0, negative = 0;
+    std::size_t first_positive, first_negative, first_flat;
+  };
+  const std::size_t nt = mesh.tets.size();
+  constexpr std::size_t block = 1 << 14;
+  std::vector<Orientations> blocks((nt + block - 1) / block, Orientations{0, 0, nt, nt, nt});
+  Thread_workers<char>(threads).for_each(0, static_cast<int>(blocks.size()), [&](char&, int b) {
+    Orientations& o = blocks[static_cast<std::size_t>(b)];
+    for(std::size_t t = static_cast<std::size_t>(b) * block; t < std::min(nt, (static_cast<std::size_t>(b) + 1) * block); ++t)
+    {
+      const auto& c = mesh.tets[t];
+      const CGAL::Orientation sign = CGAL::orientation(mesh.points[c[0]], mesh.points[c[1]],
+                                                       mesh.points[c[2]], mesh.points[c[3]]);
+      if(sign == CGAL::POSITIVE) { if(o.positive++ == 0) o.first_positive = t; }
+      else if(sign == CGAL::NEGATIVE) { if(o.negative++ == 0) o.first_negative = t; }
+      else { o.first_flat = t; return; }
+    }
+  }, 1);
+  std::size_t positive = 0, negative = 0, first_positive = nt, first_negative = nt;
+  for(const Orientations& o : blocks)
+  {
+    if(o.first_flat < nt)
+    {
+      const auto& c = mesh.tets[o.first_flat];
+      throw Mesh_io_error(file, src.tet_line(o.first_flat),
+                          "tetrahedron " + std::to_string(o.first_flat + 1) + " (" + internal::tet_to_string(c) +
                               ") is flat: its four vertices are coplanar (exact predicate), so it has no "
                               "volume; every tetrahedron, labelled 0 or not, must have one");
+    }
+    positive += o.positive;
+    negative += o.negative;
+    first_positive = std::min(first_positive, o.first_positive);
+    first_negative = std::min(first_negative, o.first_negative);
   }
   if(positive > 0 && negative > 0)
   {

@@ -12,6 +12,8 @@
 #include <CGAL/BODT_3/IO/write_atomically.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -61,9 +63,45 @@ inline bool looks_like_medit(std::string_view head)
   return t.empty() || std::string_view("MeshVersionFormatted").substr(0, t.size()) == t;
 }
 
+/// Reads `n` elements of `N` vertex indices and a label in parallel (`Token_reader::read_rows`),
+/// appended to `cells`, `labels` and `lines`; false, with nothing appended, when they must
+/// be read token by token.
+template <std::size_t N>
+bool read_rows(Token_reader& in, std::size_t n, int threads, std::size_t vertices,
+               std::vector<std::array<int, N>>& cells, std::vector<int>& labels, std::vector<long>& lines)
+{
+  const std::size_t base = cells.size();
+  cells.resize(base + n);
+  labels.resize(base + n);
+  lines.resize(base + n);
+  const bool read = in.read_rows(n, N + 1, threads, [&](std::size_t i, long line, const std::string_view* f) {
+    long long v;
+    for(std::size_t k = 0; k < N; ++k)
+    {
+      if(!internal::parse_integer(f[k], v) || v < 1 || static_cast<unsigned long long>(v) > vertices) return false;
+      cells[base + i][k] = static_cast<int>(v - 1);
+    }
+    if(!internal::parse_integer(f[N], v) || v < std::numeric_limits<int>::min() ||
+       v > std::numeric_limits<int>::max())
+      return false;
+    labels[base + i] = static_cast<int>(v);
+    lines[base + i] = line;
+    return true;
+  });
+  if(!read)
+  {
+    cells.resize(base);
+    labels.resize(base);
+    lines.resize(base);
+  }
+  return read;
+}
+
 /// Parses the text of an ASCII Medit file named `file`; `version` receives its
-/// MeshVersionFormatted.
-inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostream& warnings, int& version)
+/// MeshVersionFormatted. Sections laid out one entry per line are read on
+/// `threads` threads (0: all cores); the result does not depend on their number.
+inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostream& warnings, int& version,
+                      int threads = 1)
 {
   Token_reader in(file, text);
   Tet_mesh mesh;
@@ -105,9 +143,26 @@ inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostre
       const std::size_t n = in.next_count("the number of vertices", 4);
       if(n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         in.error("the number of vertices is " + std::to_string(n) + ", more than this reader can index");
-      mesh.points.reserve(n);
-      mesh.vertex_refs.reserve(n);
-      src.vertex_lines.reserve(n);
+      mesh.points.resize(n);
+      mesh.vertex_refs.resize(n);
+      src.vertex_lines.resize(n);
+      const bool read = in.read_rows(n, 4, threads, [&](std::size_t i, long line, const std::string_view* f) {
+        double x, y, z;
+        long long ref;
+        if(!internal::parse_double(f[0], x) || !internal::parse_double(f[1], y) ||
+           !internal::parse_double(f[2], z) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z) ||
+           !internal::parse_integer(f[3], ref) || ref < std::numeric_limits<int>::min() ||
+           ref > std::numeric_limits<int>::max())
+          return false;
+        mesh.points[i] = Tet_mesh::Point(x, y, z);
+        mesh.vertex_refs[i] = static_cast<int>(ref);
+        src.vertex_lines[i] = line;
+        return true;
+      });
+      if(read) continue;
+      mesh.points.clear();
+      mesh.vertex_refs.clear();
+      src.vertex_lines.clear();
       for(std::size_t i = 0; i < n; ++i)
       {
         if(in.next_is_word())
@@ -131,7 +186,10 @@ inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostre
       const char* entity = kw == "Tetrahedra" ? "tetrahedron" : kw == "Triangles" ? "triangle" : "edge";
       const char* plural = kw == "Tetrahedra" ? "tetrahedra" : kw == "Triangles" ? "triangles" : "edges";
       const std::size_t n = in.next_count(("the number of " + std::string(plural)).c_str(), arity + 1);
-      if(arity == 4) { mesh.tets.reserve(mesh.tets.size() + n); mesh.tet_labels.reserve(mesh.tets.size() + n); src.tet_lines.reserve(mesh.tets.size() + n); }
+      if(arity == 4 && read_rows(in, n, threads, mesh.points.size(), mesh.tets, mesh.tet_labels, src.tet_lines)) continue;
+      if(arity == 3 && read_rows(in, n, threads, mesh.points.size(), mesh.triangles, mesh.triangle_labels,
+                                 src.triangle_lines))
+        continue;
       for(std::size_t i = 0; i < n; ++i)
       {
         int v[4] = {0, 0, 0, 0};
@@ -221,7 +279,7 @@ inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostre
   check_refs(required, required_lines, mesh.points.size(), "RequiredVertices", "vertex", mesh.required_vertices);
   check_refs(ridges, ridge_lines, mesh.edges.size(), "Ridges", "edge", mesh.ridges);
 
-  check_and_orient(mesh, src, warnings);
+  check_and_orient(mesh, src, warnings, threads);
   return mesh;
 }
 
@@ -233,12 +291,14 @@ inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostre
 /// `Corners`, `Ridges` and `RequiredVertices`; skips other sections with a warning
 /// on `warnings`. Throws `Mesh_io_error` ("file:line: what is wrong") on any
 /// defect, including those `check_and_orient` finds. `version`, when given,
-/// receives the file's MeshVersionFormatted.
-inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std::cerr, int* version = nullptr)
+/// receives the file's MeshVersionFormatted. `threads`: how many threads read
+/// (0: all cores); the result does not depend on it.
+inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std::cerr, int* version = nullptr,
+                           int threads = 1)
 {
   const internal::Mapped_file data(file, "a Medit mesh file", internal_medit::looks_like_medit);
   int v = 0;
-  Tet_mesh mesh = internal_medit::parse(file, data.bytes(), warnings, v);
+  Tet_mesh mesh = internal_medit::parse(file, data.bytes(), warnings, v, threads);
   if(version) *version = v;
   return mesh;
 }
@@ -247,18 +307,17 @@ inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std
 /// (1 to 4; it says how a binary reader should size numbers and changes nothing
 /// in ASCII). Coordinates are written in the shortest form that reads back to the
 /// same double.
-inline void write_medit(std::ostream& stream, const Tet_mesh& mesh, int version = 2)
+inline void write_medit(std::ostream& stream, const Tet_mesh& mesh, int version = 2, int threads = 1)
 {
   if(version < 1 || version > 4)
     throw std::invalid_argument("write_medit: version must be 1 to 4, not " + std::to_string(version));
   internal::Output_buffer out(stream);
   out.put("MeshVersionFormatted ").put_int(version).put("\n\nDimension 3\n\nVertices\n").put_int(mesh.points.size()).put('\n');
-  for(std::size_t i = 0; i < mesh.points.size(); ++i)
-  {
+  internal::put_rows(out, mesh.points.size(), threads, [&mesh](internal::Text_block& row, std::size_t i) {
     const auto& p = mesh.points[i];
-    out.put_double(p.x()).put(' ').put_double(p.y()).put(' ').put_double(p.z()).put(' ');
-    out.put_int(i < mesh.vertex_refs.size() ? mesh.vertex_refs[i] : 0).put('\n');
-  }
+    row.put_double(p.x()).put(' ').put_double(p.y()).put(' ').put_double(p.z()).put(' ');
+    row.put_int(i < mesh.vertex_refs.size() ? mesh.vertex_refs[i] : 0).put('\n');
+  });
   if(!mesh.triangles.empty())
   {
     out.put("\nTriangles\n").put_int(mesh.triangles.size()).put('\n');
@@ -270,12 +329,11 @@ inline void write_medit(std::ostream& stream, const Tet_mesh& mesh, int version 
     }
   }
   out.put("\nTetrahedra\n").put_int(mesh.tets.size()).put('\n');
-  for(std::size_t i = 0; i < mesh.tets.size(); ++i)
-  {
+  internal::put_rows(out, mesh.tets.size(), threads, [&mesh](internal::Text_block& row, std::size_t i) {
     const auto& t = mesh.tets[i];
-    out.put_int(t[0] + 1).put(' ').put_int(t[1] + 1).put(' ').put_int(t[2] + 1).put(' ').put_int(t[3] + 1);
-    out.put(' ').put_int(mesh.tet_labels[i]).put('\n');
-  }
+    row.put_int(t[0] + 1).put(' ').put_int(t[1] + 1).put(' ').put_int(t[2] + 1).put(' ').put_int(t[3] + 1);
+    row.put(' ').put_int(mesh.tet_labels[i]).put('\n');
+  });
   if(!mesh.edges.empty())
   {
     out.put("\nEdges\n").put_int(mesh.edges.size()).put('\n');
@@ -293,9 +351,9 @@ inline void write_medit(std::ostream& stream, const Tet_mesh& mesh, int version 
   out.put("\nEnd\n");
 }
 
-inline void write_medit(const std::string& file, const Tet_mesh& mesh, int version = 2)
+inline void write_medit(const std::string& file, const Tet_mesh& mesh, int version = 2, int threads = 1)
 {
-  write_atomically(file, [&](std::ostream& out) { write_medit(out, mesh, version); });
+  write_atomically(file, [&](std::ostream& out) { write_medit(out, mesh, version, threads); });
 }
 
 } // namespace IO

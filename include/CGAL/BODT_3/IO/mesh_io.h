@@ -136,13 +136,15 @@ inline std::string format_name(const Mesh_file_format& f)
 }
 
 /// Reads a mesh in the format its name says and fills `format` with what the file
-/// was (so that `output_format` can keep it). Throws `Mesh_io_error`.
-inline Tet_mesh read_mesh(const std::string& path, Mesh_file_format& format, std::ostream& warnings = std::cerr)
+/// was (so that `output_format` can keep it). `threads` read and check an ASCII
+/// Medit file (0: all cores); the result does not depend on it. Throws `Mesh_io_error`.
+inline Tet_mesh read_mesh(const std::string& path, Mesh_file_format& format, std::ostream& warnings = std::cerr,
+                          int threads = 1)
 {
   format = {format_of(path), 0, false};
   switch(format.format)
   {
-  case Mesh_format::medit: return read_medit(path, warnings, &format.version);
+  case Mesh_format::medit: return read_medit(path, warnings, &format.version, threads);
   case Mesh_format::meshb: format.binary = true; return read_meshb(path, warnings, &format.version);
   case Mesh_format::gmsh: return read_gmsh(path, warnings, &format.version, &format.binary);
   case Mesh_format::vtu: return read_vtu(path, warnings, &format.binary);
@@ -165,12 +167,16 @@ inline Tet_mesh read_mesh(const std::string& path, std::ostream& warnings = std:
 /// files BASE.node, .ele, .face and .edge, BASE being `path` without a TetGen
 /// extension), atomically. A legacy VTK version other than 42 and 51 is written as
 /// 42, a Gmsh version other than 22 and 41 as 41 (so that any version read can be
-/// kept). Throws `Mesh_io_error`.
-inline void write_mesh(const std::string& path, const Tet_mesh& mesh, const Mesh_file_format& format)
+/// kept). `threads` format an ASCII Medit file (0: all cores); the bytes do not
+/// depend on it. Throws `Mesh_io_error`.
+inline void write_mesh(const std::string& path, const Tet_mesh& mesh, const Mesh_file_format& format,
+                       int threads = 1)
 {
   switch(format.format)
   {
-  case Mesh_format::medit: write_medit(path, mesh, format.version >= 1 && format.version <= 4 ? format.version : 2); return;
+  case Mesh_format::medit:
+    write_medit(path, mesh, format.version >= 1 && format.version <= 4 ? format.version : 2, threads);
+    return;
   case Mesh_format::meshb: write_meshb(path, mesh, format.version >= 1 && format.version <= 4 ? format.version : 2); return;
   case Mesh_format::gmsh: write_gmsh(path, mesh, format.version == 22 ? 22 : 41, format.binary); return;
   case Mesh_format::vtu: write_vtu(path, mesh, format.binary); return;
