@@ -5,7 +5,8 @@
 // (read_mesh from the page cache, including the mesh checks), and the read time
 // without the checks (check_and_orient timed alone and subtracted).
 //
-// usage: io_speed [N] [folder]   (folder: where the files go, default /tmp)
+// usage: io_speed [N] [folder] [threads]   (folder: where the files go, default /tmp;
+// threads: of the ASCII Medit reader, checks and writer, default 1; the others use one)
 #include "jittered_grid.h"
 
 #include <CGAL/BODT_3/IO/mesh_io.h>
@@ -35,9 +36,10 @@ int main(int argc, char** argv)
 {
   const int n = argc > 1 ? std::atoi(argv[1]) : 60;
   const std::filesystem::path folder = argc > 2 ? argv[2] : "/tmp";
+  const int threads = argc > 3 ? std::atoi(argv[3]) : 1;
   const Tet_mesh mesh = jittered_grid(n);
-  std::printf("jittered grid, N = %d: %zu vertices, %zu tetrahedra, %zu triangles\n\n", n, mesh.points.size(),
-              mesh.tets.size(), mesh.triangles.size());
+  std::printf("jittered grid, N = %d: %zu vertices, %zu tetrahedra, %zu triangles; %d thread(s) for .mesh\n\n", n,
+              mesh.points.size(), mesh.tets.size(), mesh.triangles.size(), threads);
   std::printf("| format | size (MB) | write (s) | write MB/s | read (s) | read MB/s | read without checks (s) | MB/s |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
   for(const char* name : {"mesh", "meshb", "msh41", "msh22", "msh41-binary", "msh22-binary", "vtu", "vtu-ascii",
@@ -51,7 +53,9 @@ int main(int argc, char** argv)
                             : format.format == IO::Mesh_format::vtk ? ".vtk" : ".node";
     const std::filesystem::path file = folder / (std::string("io_speed_") + name + ext);
     auto t = std::chrono::steady_clock::now();
-    IO::write_mesh(file.string(), mesh, format);
+    // Only the ASCII Medit reader, its checks and writer take threads.
+    const int format_threads = format.format == IO::Mesh_format::medit ? threads : 1;
+    IO::write_mesh(file.string(), mesh, format, format_threads);
     const double write = seconds_since(t);
     std::uintmax_t bytes = 0;
     for(const char* e : {".node", ".ele", ".face", ".edge"})
@@ -60,7 +64,8 @@ int main(int argc, char** argv)
 
     std::ostringstream warnings;
     t = std::chrono::steady_clock::now();
-    const Tet_mesh back = IO::read_mesh(file.string(), warnings);
+    IO::Mesh_file_format read_format;
+    const Tet_mesh back = IO::read_mesh(file.string(), read_format, warnings, format_threads);
     const double read = seconds_since(t);
     if(back.tets != mesh.tets || back.points.size() != mesh.points.size())
     {
@@ -72,7 +77,7 @@ int main(int argc, char** argv)
     CGAL::BODT_3::Tet_mesh_source source;
     source.file = file.string();
     t = std::chrono::steady_clock::now();
-    CGAL::BODT_3::check_and_orient(copy, source, warnings);
+    CGAL::BODT_3::check_and_orient(copy, source, warnings, format_threads);
     const double check = seconds_since(t);
     const double mb = static_cast<double>(bytes) / 1e6;
     std::printf("| %s | %.1f | %.2f | %.0f | %.2f | %.0f | %.2f | %.0f |\n", name, mb, write, mb / write, read,

@@ -9,7 +9,6 @@
 #include <charconv>
 #include <cstring>
 #include <ostream>
-#include <string>
 #include <string_view>
 #include <type_traits>
 #include <vector>
@@ -109,36 +108,45 @@ class Text_block
 public:
   Text_block& put(std::string_view s)
   {
-    text_.append(s);
+    room(s.size());
+    std::memcpy(buf_.data() + n_, s.data(), s.size());
+    n_ += s.size();
     return *this;
   }
 
   Text_block& put(char c)
   {
-    text_.push_back(c);
+    room(1);
+    buf_[n_++] = c;
     return *this;
   }
 
   template <class Int, std::enable_if_t<std::is_integral_v<Int>, int> = 0>
   Text_block& put_int(Int v)
   {
-    char digits[24];
-    text_.append(digits, std::to_chars(digits, digits + sizeof digits, v).ptr);
+    room(24);
+    n_ = static_cast<std::size_t>(std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
     return *this;
   }
 
   Text_block& put_double(double v)
   {
-    char digits[32];
-    text_.append(digits, std::to_chars(digits, digits + sizeof digits, v).ptr);
+    room(32);
+    n_ = static_cast<std::size_t>(std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
     return *this;
   }
 
-  std::string_view text() const { return text_; }
-  void clear() { text_.clear(); }
+  std::string_view text() const { return std::string_view(buf_.data(), n_); }
+  void clear() { n_ = 0; }
 
 private:
-  std::string text_;
+  void room(std::size_t k)
+  {
+    if(buf_.size() - n_ < k) buf_.resize(std::max(2 * buf_.size(), n_ + k + 4096));
+  }
+
+  std::vector<char> buf_;
+  std::size_t n_ = 0;
 };
 
 /// Writes rows 0 to n - 1 to `out`, `row(block, i)` formatting row i into a
