@@ -17,68 +17,82 @@ namespace CGAL {
 namespace BODT_3 {
 namespace internal {
 
-/// Formats text and binary data into a large buffer handed to the stream in
-/// blocks, so that writing a mesh is a loop of `to_chars` calls and no stream
-/// formatting. Numbers are written in the shortest form that reads back to the
-/// same double, bit for bit.
-class Output_buffer
+/// The formatting calls of `Output_buffer` and `Text_block`, into the character
+/// buffer they hold: `Sink::room(k)` makes room for k more bytes (a full buffer is
+/// flushed by one and grown by the other). Numbers are written with `to_chars`,
+/// doubles in the shortest form that reads back to the same double, bit for bit.
+template <class Sink>
+class Formatter
 {
 public:
-  explicit Output_buffer(std::ostream& out) : out_(out), buf_(1 << 20) {}
-  Output_buffer(const Output_buffer&) = delete;
-  Output_buffer& operator=(const Output_buffer&) = delete;
-  ~Output_buffer() { flush(); }
-
-  Output_buffer& put(std::string_view s)
+  Sink& put(std::string_view s)
   {
-    if(s.size() > buf_.size() - n_)
-    {
-      flush();
-      if(s.size() > buf_.size())
-      {
-        out_.write(s.data(), static_cast<std::streamsize>(s.size()));
-        flushed_ += s.size();
-        return *this;
-      }
-    }
+    sink().room(s.size());
     std::memcpy(buf_.data() + n_, s.data(), s.size());
     n_ += s.size();
-    return *this;
+    return sink();
   }
 
-  Output_buffer& put(char c)
+  Sink& put(char c)
   {
-    room(1);
+    sink().room(1);
     buf_[n_++] = c;
-    return *this;
+    return sink();
   }
 
   template <class Int, std::enable_if_t<std::is_integral_v<Int>, int> = 0>
-  Output_buffer& put_int(Int v)
+  Sink& put_int(Int v)
   {
-    room(24);
+    sink().room(24);
     n_ = static_cast<std::size_t>(std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
-    return *this;
+    return sink();
   }
 
   /// Shortest round-trip decimal form.
-  Output_buffer& put_double(double v)
+  Sink& put_double(double v)
   {
-    room(32);
+    sink().room(32);
     n_ = static_cast<std::size_t>(std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
-    return *this;
+    return sink();
   }
 
   /// The bytes of `v` as the machine holds them (little-endian on the machines we build for).
   template <class T>
-  Output_buffer& put_binary(const T& v)
+  Sink& put_binary(const T& v)
   {
     static_assert(std::is_trivially_copyable_v<T>);
-    room(sizeof(T));
+    sink().room(sizeof(T));
     std::memcpy(buf_.data() + n_, &v, sizeof(T));
     n_ += sizeof(T);
-    return *this;
+    return sink();
   }
+
+protected:
+  explicit Formatter(std::size_t capacity) : buf_(capacity) {}
+
+  // Room for k more bytes by growing the buffer.
+  void grow_for(std::size_t k)
+  {
+    if(buf_.size() - n_ < k) buf_.resize(std::max(2 * buf_.size(), n_ + k + 4096));
+  }
+
+  std::vector<char> buf_;
+  std::size_t n_ = 0;
+
+private:
+  Sink& sink() { return static_cast<Sink&>(*this); }
+};
+
+/// Formats text and binary data into a large buffer handed to the stream in
+/// blocks, so that writing a mesh is a loop of `to_chars` calls and no stream
+/// formatting.
+class Output_buffer : public Formatter<Output_buffer>
+{
+public:
+  explicit Output_buffer(std::ostream& out) : Formatter(1 << 20), out_(out) {}
+  Output_buffer(const Output_buffer&) = delete;
+  Output_buffer& operator=(const Output_buffer&) = delete;
+  ~Output_buffer() { flush(); }
 
   /// Bytes written so far, flushed or not.
   std::size_t written() const { return flushed_ + n_; }
@@ -91,62 +105,32 @@ public:
   }
 
 private:
+  friend class Formatter<Output_buffer>;
+
+  // A full buffer goes to the stream; what does not fit an empty one grows it.
   void room(std::size_t k)
   {
     if(buf_.size() - n_ < k) flush();
+    grow_for(k);
   }
 
   std::ostream& out_;
-  std::vector<char> buf_;
-  std::size_t n_ = 0;
   std::size_t flushed_ = 0;
 };
 
 /// Text formatted in memory, with `Output_buffer`'s calls, for `put_rows`.
-class Text_block
+class Text_block : public Formatter<Text_block>
 {
 public:
-  Text_block& put(std::string_view s)
-  {
-    room(s.size());
-    std::memcpy(buf_.data() + n_, s.data(), s.size());
-    n_ += s.size();
-    return *this;
-  }
-
-  Text_block& put(char c)
-  {
-    room(1);
-    buf_[n_++] = c;
-    return *this;
-  }
-
-  template <class Int, std::enable_if_t<std::is_integral_v<Int>, int> = 0>
-  Text_block& put_int(Int v)
-  {
-    room(24);
-    n_ = static_cast<std::size_t>(std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
-    return *this;
-  }
-
-  Text_block& put_double(double v)
-  {
-    room(32);
-    n_ = static_cast<std::size_t>(std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
-    return *this;
-  }
+  Text_block() : Formatter(0) {}
 
   std::string_view text() const { return std::string_view(buf_.data(), n_); }
   void clear() { n_ = 0; }
 
 private:
-  void room(std::size_t k)
-  {
-    if(buf_.size() - n_ < k) buf_.resize(std::max(2 * buf_.size(), n_ + k + 4096));
-  }
+  friend class Formatter<Text_block>;
 
-  std::vector<char> buf_;
-  std::size_t n_ = 0;
+  void room(std::size_t k) { grow_for(k); }
 };
 
 /// Writes rows 0 to n - 1 to `out`, `row(block, i)` formatting row i into a
