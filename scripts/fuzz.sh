@@ -8,7 +8,8 @@
 #   FUZZ_RUNS=1000000 scripts/fuzz.sh  a number of executions per harness instead of a time
 # Harnesses: medit meshb gmsh vtu vtk tetgen (the readers, with round trips) and smooth
 # (three iterations of the default pipeline on small Medit meshes: finite coordinates,
-# no inverted tetrahedron added, volumes kept, at most 5% vertices added). Exits non-zero
+# no inverted tetrahedron added, every subdomain's volume kept to 1e-10, at most 5%
+# vertices added). Exits non-zero
 # when a harness finds a crash, a leak, undefined behaviour or a broken promise; the
 # input that did it is kept in build-fuzz/findings/HARNESS/.
 set -euo pipefail

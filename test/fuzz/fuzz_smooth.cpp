@@ -1,7 +1,7 @@
 // libFuzzer harness: a short run of the default pipeline (B-ODT sweeps, flips,
 // max-min steps, insertion) on every small mesh the Medit reader accepts. The run
 // must not crash, must leave every coordinate finite, must not add inverted or flat
-// tetrahedra, must keep every subdomain's volume (1e-9 relative) and must add at
+// tetrahedra, must keep every subdomain's volume (1e-10 relative, the promise) and must add at
 // most 5% vertices; otherwise the harness aborts (a finding).
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -66,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     const auto it = after.volume_per_subdomain.find(label);
     require(it != after.volume_per_subdomain.end(), "a subdomain disappeared");
-    require(std::abs(it->second - volume) <= 1e-9 * std::abs(volume), "a subdomain's volume changed");
+    require(std::abs(it->second - volume) <= 1e-10 * std::abs(volume), "a subdomain's volume changed");
   }
   return 0;
 }

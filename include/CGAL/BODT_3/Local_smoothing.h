@@ -8,10 +8,12 @@
 #include <CGAL/BODT_3/Tensor_voting.h>
 #include <CGAL/BODT_3/Vertex_classification.h>
 #include <CGAL/BODT_3/Vertex_star.h>
+#include <CGAL/BODT_3/Volume_budget.h>
 #include <CGAL/BODT_3/Volume_preserving_move.h>
 #include <CGAL/BODT_3/bare_point.h>
 #include <CGAL/BODT_3/tet_quality.h>
 
+#include <CGAL/FPU.h>
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Kernel_traits.h>
 
@@ -29,7 +31,9 @@ namespace BODT_3 {
 /// checked the same way: every finite cell around the vertex stays positively
 /// oriented (exact predicate), the star's worst mesh cell does not get worse and
 /// stays within the bounds, and the convex hull stays locally convex where it is
-/// now (as in the sweeps); a refused move is tried at 1/2, 1/4, 1/8.
+/// now (as in the sweeps), and, with a `budget`, a move that may change a
+/// subdomain's volume is paid from it as in the sweeps (Move_guard); a refused
+/// move is tried at 1/2, 1/4, 1/8.
 template <class Labels>
 class Local_smoothing
 {
@@ -42,8 +46,9 @@ public:
   using Vector = typename K::Vector_3;
 
   Local_smoothing(Labels& labels, const Dihedral_bounds& bounds, Quality_measure measure,
-                  const Tensor_voting_options& voting)
-    : labels_(labels), bounds_(bounds), measure_(measure), voting_(voting)
+                  const Tensor_voting_options& voting, Volume_budget* budget = nullptr)
+    : labels_(labels), bounds_(bounds), measure_(measure), voting_(voting),
+      budget_(budget && budget->limited() ? budget : nullptr)
   {}
 
   /// Moves `v` by its move for `kind` (a feature vertex moves along the chord
@@ -82,6 +87,7 @@ public:
       if(accepts(v, p, old_worst))
       {
         set_bare_point(tr, v, p);
+        if(budget_) budget_->spend(cost_);
         return true;
       }
     }
@@ -119,7 +125,7 @@ private:
     }
   }
 
-  bool accepts(Vertex_handle v, const Point& p, double old_worst) const
+  bool accepts(Vertex_handle v, const Point& p, double old_worst)
   {
     const Tr& tr = labels_.triangulation();
     for(const auto& h : hull_)
@@ -139,7 +145,25 @@ private:
          !bounds_.contains(q[0], q[1], q[2], q[3], measure_ == Quality_measure::min_dihedral_sine ? quality : 0.0))
         return false;
     }
-    return true;
+    return volume_within_budget(p);
+  }
+
+  // Whether moving the star's vertex to p costs no more than the budget allows
+  // (leaves the cost in cost_). A vertex inside one subdomain keeps its volume.
+  bool volume_within_budget(const Point& p)
+  {
+    cost_ = 0;
+    if(!budget_ || star_.cells.empty()) return true;
+    bool one = !star_.on_boundary();
+    for(const auto& c : star_.cells) one = one && c.subdomain == star_.cells[0].subdomain;
+    if(one) return true;
+    change_.clear();
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      for(const auto& c : star_.cells) change_.add_move(c.subdomain, star_.x0, p, c.a, c.b, c.c);
+    }
+    cost_ = budget_->cost(change_);
+    return cost_ <= budget_->allowance();
   }
 
   // The star as the moves see it (Vertex_star's conventions).
@@ -175,6 +199,9 @@ private:
   std::vector<Cell_handle> all_cells_, cells_;   // around the vertex; the finite ones
   std::vector<std::array<Vertex_handle, 4>> hull_;
   Vertex_star<K> star_;
+  Volume_budget* budget_;   // null: volume not priced
+  Volume_change change_;
+  double cost_ = 0;   // of the position judged last
 };
 
 } // namespace BODT_3

@@ -5,7 +5,10 @@
 
 #include <CGAL/BODT_3/Smoothing_mesh.h>
 #include <CGAL/BODT_3/Thread_workers.h>
+#include <CGAL/BODT_3/Volume_budget.h>
 #include <CGAL/BODT_3/tet_quality.h>
+
+#include <CGAL/FPU.h>
 
 #include <CGAL/Kernel/global_functions.h>
 
@@ -22,6 +25,11 @@ namespace BODT_3 {
 /// not, stays positively oriented, decided by CGAL's exact orientation predicate;
 /// for a triangulation, every locally convex hull edge next to the vertex stays
 /// convex, so the convex hull remains one.
+///
+/// Volume (with a budget): a vertex whose mesh cells are of one subdomain and
+/// which is on no boundary keeps that volume exactly, since its link stays; any
+/// other move costs what `Volume_change` bounds for the subdomains of its star,
+/// and is refused above the allowance `allow` set (see Volume_budget).
 ///
 /// Quality (when `quality_guard` is on): the worst mesh cell of the star, by the
 /// measure of tet_quality.h (minimum dihedral sine by default), is not worse after the move,
@@ -49,6 +57,7 @@ public:
     inverts_mesh_cell,
     inverts_outside_cell,
     breaks_convex_hull,
+    changes_volume,
     worsens_quality
   };
 
@@ -58,19 +67,49 @@ public:
     std::vector<double> qualities;   // the star's mesh cells at the position judged last
     Refusal last_refusal = Refusal::worsens_quality;
     Refusal first_refusal = Refusal::worsens_quality;   // of the full-length move
+    Volume_change volume;
+    double cost = 0;   // of the position judged last, in the budget's units
   };
 
   /// `threads` measure the cells (`refresh`); nothing depends on their number.
+  /// `budget`, when given, prices the moves that may change a subdomain's volume.
   Move_guard(Smoothing_mesh<K>& mesh, bool quality_guard, const Dihedral_bounds& bounds,
-             Quality_measure measure = Quality_measure::min_dihedral_sine, int threads = 1)
-    : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds), measure_(measure), workers_(threads)
+             Quality_measure measure = Quality_measure::min_dihedral_sine, int threads = 1,
+             const Volume_budget* budget = nullptr)
+    : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds), measure_(measure), workers_(threads),
+      budget_(budget && budget->limited() ? budget : nullptr)
   {
+    if(budget_) allowance_ = budget_->allowance();
     refresh();
   }
 
-  /// Re-reads the cell qualities, after the mesh's cells changed.
+  /// The most a move may cost until the next call (a share of the budget's allowance).
+  void allow(double allowance) { allowance_ = allowance; }
+
+  /// Whether moves of `v` keep every subdomain's volume exactly (see the class comment).
+  bool keeps_volume(int v) const { return !budget_ || keeps_volume_[v]; }
+
+  /// Re-reads the cell qualities and which vertices keep their volume, after the mesh's cells changed.
   void refresh()
   {
+    if(budget_)
+    {
+      const int nv = static_cast<int>(mesh_.number_of_vertices());
+      keeps_volume_.assign(nv, 1);
+      for(int v = 0; v < nv; ++v)
+      {
+        int first = -1;   // the first mesh cell around v
+        bool one = mesh_.boundary_begin[v] == mesh_.boundary_begin[v + 1];
+        for(int k = mesh_.incidence_begin[v]; one && k < mesh_.incidence_begin[v + 1]; ++k)
+        {
+          const int c = mesh_.incidences[k].cell;
+          if(!mesh_.in_mesh[c]) continue;
+          if(first < 0) first = c;
+          one = mesh_.subdomain[c] == mesh_.subdomain[first];
+        }
+        keeps_volume_[v] = one;
+      }
+    }
     if(!quality_guard_) return;
     quality_.resize(mesh_.cells.size());
     workers_.for_each(0, static_cast<int>(mesh_.cells.size()), [this](char&, int c) {
@@ -156,6 +195,27 @@ public:
         return false;
       }
     }
+    trial.cost = 0;
+    if(!keeps_volume(v))
+    {
+      trial.volume.clear();
+      {
+        CGAL::Protect_FPU_rounding<true> upward;
+        for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
+        {
+          const int c = m.incidences[k].cell;
+          if(!m.in_mesh[c]) continue;
+          const auto& f = m.incidences[k].face;
+          trial.volume.add_move(m.subdomain[c], m.points[v], p, m.points[f[0]], m.points[f[1]], m.points[f[2]]);
+        }
+      }
+      trial.cost = budget_->cost(trial.volume);
+      if(!(trial.cost <= allowance_))
+      {
+        trial.last_refusal = Refusal::changes_volume;
+        return false;
+      }
+    }
     trial.last_refusal = Refusal::worsens_quality;
     if(!quality_guard_) return true;
 
@@ -196,6 +256,9 @@ private:
   Quality_measure measure_;
   std::vector<double> quality_;   // per cell
   Thread_workers<char> workers_;
+  const Volume_budget* budget_;     // null: volume not priced
+  double allowance_ = 0;
+  std::vector<char> keeps_volume_;   // per vertex
 };
 
 } // namespace BODT_3

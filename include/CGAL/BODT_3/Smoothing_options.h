@@ -154,6 +154,7 @@ struct Iteration_stats
   std::size_t refused_inverting_mesh_cell = 0;
   std::size_t refused_inverting_outside_cell = 0;   // a finite cell outside the mesh (C3T3)
   std::size_t refused_breaking_hull = 0;
+  std::size_t refused_changing_volume = 0;        // beyond the volume budget (Volume_budget.h)
   std::size_t refused_worsening_quality = 0;
   std::size_t max_min_moves = 0;      // vertices moved by the max-min fallback
   double max_relative_move = 0;       // largest move / local size

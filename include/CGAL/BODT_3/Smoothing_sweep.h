@@ -27,7 +27,8 @@ namespace BODT_3 {
 /// `sweep_order`, gets its volume-preserving B-ODT move (`Volume_preserving_move`)
 /// through `Move_guard` (with NODT, surface vertices get `Nodt_move`, projected on
 /// the boundary the mesh had when the sweeps began). After the mesh's cells change (flips, insertion), call
-/// `refresh` with the vertices whose stars changed.
+/// `refresh` with the vertices whose stars changed. With a `budget`, moves that may
+/// change a subdomain's volume are priced and paid from it (Volume_budget.h).
 template <class K>
 class Smoothing_sweep
 {
@@ -35,10 +36,11 @@ public:
   using Vector = typename K::Vector_3;
 
   Smoothing_sweep(Smoothing_mesh<K>& mesh, const Vertex_classification& cls, const Smoothing_options& opt,
-                  const Dihedral_bounds& bounds)
-    : mesh_(mesh), cls_(cls), opt_(opt), guard_(mesh, opt.quality_guard, bounds, opt.quality_measure, opt.threads),
+                  const Dihedral_bounds& bounds, Volume_budget* budget = nullptr)
+    : mesh_(mesh), cls_(cls), opt_(opt),
+      guard_(mesh, opt.quality_guard, bounds, opt.quality_measure, opt.threads, budget), budget_(budget),
       workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1), moved_now_(mesh.number_of_vertices(), 0),
-      moved_once_(mesh.number_of_vertices(), 0)
+      moved_once_(mesh.number_of_vertices(), 0), cost_(mesh.number_of_vertices(), 0)
   {
     if(opt.smoothing_method == Smoothing_method::NODT) projection_ = std::make_unique<Boundary_projection<K>>(mesh);
     derive();
@@ -52,6 +54,7 @@ public:
     dirty_.resize(mesh_.number_of_vertices(), 1);
     moved_now_.resize(mesh_.number_of_vertices(), 0);
     moved_once_.resize(mesh_.number_of_vertices(), 0);
+    cost_.resize(mesh_.number_of_vertices(), 0);
     for(int v : changed) dirty_[v] = 1;
     derive();
     for(int v : changed)
@@ -68,12 +71,21 @@ public:
     for(std::size_t k = 0; k + 1 < order_.colour_begin.size(); ++k)
     {
       const int begin = order_.colour_begin[k], end = order_.colour_begin[k + 1];
+      if(budget_)
+      {
+        // The colour's moves that may change a volume share one allowance.
+        std::size_t priced = 0;
+        for(int i = begin; i < end; ++i)
+          priced += dirty_[order_.vertices[i]] && !guard_.keeps_volume(order_.vertices[i]);
+        guard_.allow(budget_->allowance(priced));
+      }
       workers_.for_each(begin, end, [this](Worker& w, int i) { visit(order_.vertices[i], w); });
-      // Then, in the sequential order: what the moves changed.
+      // Then, in the sequential order: what the moves changed, and what they cost.
       for(int i = begin; i < end; ++i)
       {
         const int v = order_.vertices[i];
         if(!moved_now_[v]) continue;
+        if(budget_) budget_->spend(cost_[v]);
         moved_now_[v] = 0;
         moved_once_[v] = 1;
         moved_.push_back(v);
@@ -89,6 +101,7 @@ public:
       stats.refused_inverting_mesh_cell += c.refused_inverting_mesh_cell;
       stats.refused_inverting_outside_cell += c.refused_inverting_outside_cell;
       stats.refused_breaking_hull += c.refused_breaking_hull;
+      stats.refused_changing_volume += c.refused_changing_volume;
       stats.refused_worsening_quality += c.refused_worsening_quality;
       stats.max_relative_move = std::max(stats.max_relative_move, c.max_relative_move);
       w.counts = Iteration_stats();
@@ -132,6 +145,7 @@ public:
           for(double sign : {1.0, -1.0})
           {
             const typename K::Point_3 p = mesh_.points[v] + (sign * h) * dirs[d];
+            if(budget_) guard_.allow(budget_->allowance());
             if(guard_.accepts(v, p, trial_) && Move_guard<K>::accepted_worst(trial_) > best_worst)
             {
               best_worst = Move_guard<K>::accepted_worst(trial_);
@@ -142,6 +156,7 @@ public:
         {
           guard_.accepts(v, best, trial_);
           guard_.apply(v, best, trial_);
+          if(budget_) budget_->spend(trial_.cost);
           worst = best_worst;
           moved = true;
         }
@@ -243,6 +258,7 @@ private:
       case Refusal::inverts_mesh_cell: ++stats.refused_inverting_mesh_cell; break;
       case Refusal::inverts_outside_cell: ++stats.refused_inverting_outside_cell; break;
       case Refusal::breaks_convex_hull: ++stats.refused_breaking_hull; break;
+      case Refusal::changes_volume: ++stats.refused_changing_volume; break;
       case Refusal::worsens_quality: ++stats.refused_worsening_quality; break;
       }
       return;
@@ -250,6 +266,7 @@ private:
     ++stats.moved;
     if(fraction < 1) ++stats.shortened;
     moved_now_[v] = 1;
+    cost_[v] = w.trial.cost;
     double volume = 0;
     for(const auto& c : star.cells) volume += CGAL::determinant(c.a - star.x0, c.b - star.x0, c.c - star.x0);
     const double size = std::cbrt(volume / 6.0 / static_cast<double>(star.cells.size()));
@@ -265,6 +282,7 @@ private:
   const Vertex_classification& cls_;
   const Smoothing_options& opt_;
   Move_guard<K> guard_;
+  Volume_budget* budget_;   // null: volume not priced
   typename Move_guard<K>::Trial trial_;   // for the sequential max-min steps
   Thread_workers<Worker> workers_;
   Volume_preserving_move mover_;
@@ -275,6 +293,7 @@ private:
   std::vector<char> dirty_;
   std::vector<char> moved_now_;   // moved in the colour being swept
   std::vector<char> moved_once_;
+  std::vector<double> cost_;   // of each vertex's move in the colour being swept
   std::vector<int> moved_;
 };
 

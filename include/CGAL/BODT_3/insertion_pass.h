@@ -9,10 +9,12 @@
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Vertex_classification.h>
 #include <CGAL/BODT_3/Vertex_insertion.h>
+#include <CGAL/BODT_3/Volume_budget.h>
 #include <CGAL/BODT_3/bare_point.h>
 #include <CGAL/BODT_3/flip_pass.h>
 #include <CGAL/BODT_3/tet_quality.h>
 
+#include <CGAL/FPU.h>
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
@@ -60,13 +62,17 @@ struct Vertex_motion
 /// `motion(v)` tells how an existing vertex moves; `boundary_moves` says whether
 /// boundary vertices may move at all (not for the interior-only ODT baseline).
 /// `added` receives the new vertices, `touched` the vertices whose star changed.
+/// With a `volume_budget`, a split whose rounded point, off its boundary edge or
+/// facet, changes a subdomain's volume and the moves of the smoothing that follows
+/// are paid from it, as in the sweeps (Volume_budget.h); a split it cannot pay is undone.
 template <class Labels, class Motion, class Vertex_id>
 Insertion_stats insertion_pass(Labels& labels, const Insertion_options& opt, const Dihedral_bounds& bounds,
                                Quality_measure measure, const Tensor_voting_options& voting, std::size_t budget,
                                bool boundary_moves, const Motion& motion, const Vertex_id& vertex_id,
                                std::vector<Added_vertex<typename Labels::Vertex_handle>>& added,
                                std::vector<typename Labels::Vertex_handle>& touched, Flip_history* history = nullptr,
-                               const std::vector<typename Labels::Cell_handle>* seeds = nullptr)
+                               const std::vector<typename Labels::Cell_handle>* seeds = nullptr,
+                               Volume_budget* volume_budget = nullptr)
 {
   using Vertex_handle = typename Labels::Vertex_handle;
   using Cell_handle = typename Labels::Cell_handle;
@@ -114,7 +120,40 @@ Insertion_stats insertion_pass(Labels& labels, const Insertion_options& opt, con
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) consider(c);
   std::sort(candidates.begin(), candidates.end(), [](const Entry& a, const Entry& b) { return b < a; });
 
-  Local_smoothing<Labels> smoother(labels, bounds, measure, voting);
+  Local_smoothing<Labels> smoother(labels, bounds, measure, voting, volume_budget);
+  Volume_change change;
+  // Whether a split's point, on its edge or facet `ends` up to rounding, changes
+  // the subdomains around it within the budget (then paid). A split with no
+  // boundary or interface facet keeps its region's union exactly.
+  auto split_within_budget = [&](const Split_record<Labels>& r, std::initializer_list<Vertex_handle> ends) {
+    if(!volume_budget || !volume_budget->limited() || r.boundary.empty()) return true;
+    const Point p = point(r.vertex);
+    change.clear();
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      for(const auto& old : r.old_cells)
+      {
+        const auto& region = r.old_regions[old.region_of];
+        if(region.kind != Region_kind::mesh) continue;
+        const int s = static_cast<int>(region.subdomain);
+        Point q[4];
+        for(int k = 0; k < 4; ++k) q[k] = point(old.vertices[k]);
+        change.add_cell(s, -1, q[0], q[1], q[2], q[3]);
+        // Each end of the split simplex, replaced by p, gives one of the new cells.
+        for(int k = 0; k < 4; ++k)
+          if(std::find(ends.begin(), ends.end(), old.vertices[k]) != ends.end())
+          {
+            Point n[4] = {q[0], q[1], q[2], q[3]};
+            n[k] = p;
+            change.add_cell(s, 1, n[0], n[1], n[2], n[3]);
+          }
+      }
+    }
+    const double cost = volume_budget->cost(change);
+    if(!(cost <= volume_budget->allowance())) return false;
+    volume_budget->spend(cost);
+    return true;
+  };
   std::map<Vertex_handle, Vertex_motion<Vertex_handle>> fresh;   // vertices added in this pass
   auto motion_of = [&](Vertex_handle v) {
     const auto it = fresh.find(v);
@@ -171,6 +210,11 @@ Insertion_stats insertion_pass(Labels& labels, const Insertion_options& opt, con
       int i, j;
       Split_record<Labels> r;
       if(!tr.tds().is_edge(u, v, cell, i, j) || !split_edge(labels, cell, i, j, p, r)) return false;
+      if(!split_within_budget(r, {u, v}))
+      {
+        undo_split(labels, r);
+        return false;
+      }
       Vertex_motion<Vertex_handle> m{Vertex_kind::interior, u, v};
       const Vertex_motion<Vertex_handle> mu = motion_of(u), mv = motion_of(v);
       const bool boundary_ends = mu.kind != Vertex_kind::interior && mv.kind != Vertex_kind::interior;
@@ -222,7 +266,13 @@ Insertion_stats insertion_pass(Labels& labels, const Insertion_options& opt, con
           (shape.bary[0] * pf[0].y() + shape.bary[1] * pf[1].y() + shape.bary[2] * pf[2].y()) / s,
           (shape.bary[0] * pf[0].z() + shape.bary[1] * pf[1].z() + shape.bary[2] * pf[2].z()) / s);
       Split_record<Labels> r;
-      if(split_facet(labels, c, shape.vertex, p, r))
+      bool split = split_facet(labels, c, shape.vertex, p, r);
+      if(split && !split_within_budget(r, {fv[0], fv[1], fv[2]}))
+      {
+        undo_split(labels, r);
+        split = false;
+      }
+      if(split)
       {
         Vertex_motion<Vertex_handle> mo{r.boundary.empty() ? Vertex_kind::interior : Vertex_kind::surface, {}, {}};
         // A facet whose three vertices are fixed lies where nothing may move (a crack

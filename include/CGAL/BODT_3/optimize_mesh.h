@@ -105,7 +105,11 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   Dihedral_bounds bounds = Dihedral_bounds::empty();
   for(const Dihedral_bounds& b : block_bounds) bounds.include(b);
 
-  Smoothing_sweep<typename Triangulation_view<Labels>::Kernel> sweep(mesh, cls, opt, bounds);
+  // Every step that may change a subdomain's volume is paid from one budget for
+  // the run (Volume_budget.h); NODT, which does not keep the volume, has none.
+  Volume_budget volume_budget =
+      opt.smoothing_method == Smoothing_method::NODT ? Volume_budget() : Volume_budget::of(mesh);
+  Smoothing_sweep<typename Triangulation_view<Labels>::Kernel> sweep(mesh, cls, opt, bounds, &volume_budget);
   auto vertex_id = [&view](typename Labels::Vertex_handle v) { return view.index(v); };
   std::vector<typename Labels::Vertex_handle> touched;
   std::vector<int> changed;
@@ -236,7 +240,8 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       if(guard_knows) cells_below(opt.insertion.quality_threshold);
       stats.insertion = insertion_pass(labels, opt.insertion, bounds, opt.quality_measure, opt.tensor_voting, budget,
                                        opt.moving_vertices == Moving_vertices::ALL, motion, vertex_id, added,
-                                       touched, &insertion_history, guard_knows ? &candidates : nullptr);
+                                       touched, &insertion_history, guard_knows ? &candidates : nullptr,
+                                       &volume_budget);
       budget -= stats.insertion.vertices_added;
       history.clock = insertion_history.clock;
       charge(result.phases.insertion);

@@ -84,6 +84,7 @@ inline void to_json(nlohmann::json& j, const Iteration_stats& s)
                       {{"inverting_mesh_cell", s.refused_inverting_mesh_cell},
                        {"inverting_outside_cell", s.refused_inverting_outside_cell},
                        {"breaking_hull", s.refused_breaking_hull},
+                       {"changing_volume", s.refused_changing_volume},
                        {"worsening_quality", s.refused_worsening_quality}}},
                      {"max_min_moves", s.max_min_moves},
                      {"max_relative_move", s.max_relative_move},
