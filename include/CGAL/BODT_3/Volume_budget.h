@@ -3,6 +3,7 @@
 #ifndef CGAL_BODT_3_VOLUME_BUDGET_H
 #define CGAL_BODT_3_VOLUME_BUDGET_H
 
+#include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/tet_quality.h>
 
 #include <CGAL/Interval_nt.h>
@@ -102,20 +103,32 @@ public:
     for(auto& [label, v] : capacity_) v = volume_tolerance * std::abs(v);
   }
 
-  /// From the mesh cells of a `Smoothing_mesh`.
+  /// From the mesh cells of a `Smoothing_mesh`, summed on `threads` threads in
+  /// blocks of cells added in block order (the same sums on any number of threads).
   template <class Mesh>
-  static Volume_budget of(const Mesh& mesh)
+  static Volume_budget of(const Mesh& mesh, int threads = 1)
   {
-    std::vector<std::pair<int, double>> volumes;
-    for(std::size_t c = 0; c < mesh.cells.size(); ++c)
-    {
-      if(!mesh.in_mesh[c]) continue;
-      const auto& q = mesh.cells[c];
-      const double v = tet_volume(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]);
-      auto it = std::find_if(volumes.begin(), volumes.end(), [&](const auto& x) { return x.first == mesh.subdomain[c]; });
-      if(it == volumes.end()) volumes.emplace_back(mesh.subdomain[c], v);
+    using Sums = std::vector<std::pair<int, double>>;
+    auto add = [](Sums& sums, int label, double v) {
+      auto it = std::find_if(sums.begin(), sums.end(), [&](const auto& x) { return x.first == label; });
+      if(it == sums.end()) sums.emplace_back(label, v);
       else it->second += v;
-    }
+    };
+    constexpr std::size_t block = 1 << 14;
+    std::vector<Sums> blocks((mesh.cells.size() + block - 1) / block);
+    Thread_workers<char>(threads).for_each(0, static_cast<int>(blocks.size()), [&](char&, int b) {
+      const std::size_t first = static_cast<std::size_t>(b) * block;
+      for(std::size_t c = first; c < std::min(mesh.cells.size(), first + block); ++c)
+      {
+        if(!mesh.in_mesh[c]) continue;
+        const auto& q = mesh.cells[c];
+        add(blocks[static_cast<std::size_t>(b)], mesh.subdomain[c],
+            tet_volume(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]));
+      }
+    }, 1);
+    Sums volumes;
+    for(const Sums& sums : blocks)
+      for(const auto& [label, v] : sums) add(volumes, label, v);
     return Volume_budget(std::move(volumes));
   }
 

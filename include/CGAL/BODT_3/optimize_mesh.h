@@ -108,7 +108,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   // Every step that may change a subdomain's volume is paid from one budget for
   // the run (Volume_budget.h); NODT, which does not keep the volume, has none.
   Volume_budget volume_budget =
-      opt.smoothing_method == Smoothing_method::NODT ? Volume_budget() : Volume_budget::of(mesh);
+      opt.smoothing_method == Smoothing_method::NODT ? Volume_budget() : Volume_budget::of(mesh, opt.threads);
   Smoothing_sweep<typename Triangulation_view<Labels>::Kernel> sweep(mesh, cls, opt, bounds, &volume_budget);
   auto vertex_id = [&view](typename Labels::Vertex_handle v) { return view.index(v); };
   std::vector<typename Labels::Vertex_handle> touched;
