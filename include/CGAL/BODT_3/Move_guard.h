@@ -96,8 +96,7 @@ public:
     {
       const int nv = static_cast<int>(mesh_.number_of_vertices());
       keeps_volume_.assign(nv, 1);
-      for(int v = 0; v < nv; ++v)
-      {
+      workers_.for_each(0, nv, [this](char&, int v) {
         int first = -1;   // the first mesh cell around v
         bool one = mesh_.boundary_begin[v] == mesh_.boundary_begin[v + 1];
         for(int k = mesh_.incidence_begin[v]; one && k < mesh_.incidence_begin[v + 1]; ++k)
@@ -108,7 +107,7 @@ public:
           one = mesh_.subdomain[c] == mesh_.subdomain[first];
         }
         keeps_volume_[v] = one;
-      }
+      }, 1024);
     }
     if(!quality_guard_) return;
     quality_.resize(mesh_.cells.size());
