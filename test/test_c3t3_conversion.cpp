@@ -366,6 +366,61 @@ TEST(C3t3_conversion, SmoothingAConvertedMeshKeepsTheVolumePerSubdomain)
   }
 }
 
+// A C3T3 handed over with facets in the complex between two cells of one
+// subdomain (an embedded surface: the two halves of the cut ball relabelled 1, the
+// facets of their interface z = 0 kept): the surface stays where it was (its
+// vertices in place, the same area covered), the complex stays valid, the volume
+// is kept. Before the fix its vertices moved as interior vertices, by up to 0.1.
+TEST(C3t3_conversion, EmbeddedFacetsOfAC3t3StayOnTheirSurface)
+{
+  Generated_mesh input = make_input(Shape::two_subdomains, Size::small);
+  C3t3& c = input.c3t3;
+  for(auto cell = c.triangulation().finite_cells_begin(); cell != c.triangulation().finite_cells_end(); ++cell)
+    if(c.is_in_complex(cell) && c.subdomain_index(cell) != 1)
+    {
+      c.remove_from_complex(cell);
+      c.add_to_complex(cell, 1);
+    }
+  auto embedded = [&c](double& area) {
+    std::vector<Point> on;
+    area = 0;
+    for(auto f = c.facets_in_complex_begin(); f != c.facets_in_complex_end(); ++f)
+    {
+      const auto cell = f->first;
+      const auto other = cell->neighbor(f->second);
+      if(!c.is_in_complex(cell) || !c.is_in_complex(other)) continue;
+      std::array<Point, 3> t;
+      for(int k = 0, m = 0; k < 4; ++k)
+        if(k != f->second) t[m++] = bare(c, cell->vertex(k));
+      area += std::sqrt(CGAL::to_double(CGAL::squared_area(t[0], t[1], t[2])));
+      on.insert(on.end(), t.begin(), t.end());
+    }
+    return on;
+  };
+  double area0 = 0, area1 = 0;
+  const std::vector<Point> on0 = embedded(area0);
+  ASSERT_FALSE(on0.empty());
+  const std::set<Point> kept(on0.begin(), on0.end());
+  double height = 0;   // Mesh_3 puts the interface within about 1e-7 of z = 0
+  for(const Point& p : on0) height = std::max(height, std::abs(p.z()));
+  const auto before = BODT::mesh_quality(c);
+  const std::vector<Point> p0 = finite_points(c);
+  CGAL::bodt_optimize_mesh_3(c, CGAL::parameters::max_iteration_number = 10);
+  const std::vector<Point> p1 = finite_points(c);
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < std::min(p0.size(), p1.size()); ++i) moved += p0[i] != p1[i];
+  EXPECT_GT(moved, p0.size() / 10);
+  const std::vector<Point> on = embedded(area1);
+  for(const Point& p : on)   // its own vertex, or one inserted on one of its facets
+    EXPECT_TRUE(kept.count(p) || std::abs(p.z()) <= height) << p;
+  EXPECT_NEAR(area1, area0, 1e-9 * area0);
+  const auto after = BODT::mesh_quality(c);
+  EXPECT_EQ(after.inverted_tets, 0u);
+  EXPECT_NEAR(after.volume_per_subdomain.at(1), before.volume_per_subdomain.at(1),
+              1e-10 * before.volume_per_subdomain.at(1));
+  EXPECT_TRUE(c.triangulation().tds().is_valid());
+}
+
 namespace {
 
 // Two tetrahedra sharing face (1 2 3) (0-based), labels 1 and 2, then a third one

@@ -32,6 +32,20 @@ struct Multi_face_removal
 
   int max_faces = 10;   // the sandwich is explored up to this many faces
 
+private:
+  struct Face
+  {
+    std::array<Vertex_handle, 3> v;   // (v0, v1, v2, w) has the orientation of cell_w
+    Cell_handle cell_w, cell_u;
+    std::array<int, 3> child;          // across edge (v[k], v[k+1]): a face index, -1, or -2 (parent)
+  };
+  // Scratch space kept between calls (removals are tried often).
+  mutable std::vector<Face> faces_;
+  mutable std::vector<double> value_;
+  mutable std::vector<std::array<char, 3>> extend_;
+  mutable std::vector<int> stack_;
+
+public:
   /// Proposes a multi-face removal rooted at facet (c, i) in `out`; returns false
   /// if none is allowed or valid. `out.improves()` tells whether to apply it.
   bool operator()(const Flip_context<Labels>& ctx, Cell_handle c, int i, Flip<Labels>& out) const
@@ -45,13 +59,8 @@ struct Multi_face_removal
     if(!ctx.flippable(region) || ctx.labels.region(n) != region || ctx.labels.patch(c, i).in_complex) return false;
 
     // The sandwich, explored depth first from the root face.
-    struct Face
-    {
-      std::array<Vertex_handle, 3> v;   // (v0, v1, v2, w) has the orientation of cell_w
-      Cell_handle cell_w, cell_u;
-      std::array<int, 3> child;          // across edge (v[k], v[k+1]): a face index, -1, or -2 (parent)
-    };
-    std::vector<Face> faces;
+    std::vector<Face>& faces = faces_;
+    faces.clear();
     {
       std::array<Vertex_handle, 3> v;
       for(int k = 0, l = 0; k < 4; ++k)
@@ -91,8 +100,10 @@ struct Multi_face_removal
     auto new_cell = [&](const Face& f, int k) {
       return std::array<Vertex_handle, 4>{u, w, f.v[k], f.v[(k + 1) % 3]};
     };
-    std::vector<double> value(faces.size());
-    std::vector<std::array<char, 3>> extend(faces.size(), std::array<char, 3>{0, 0, 0});
+    std::vector<double>& value = value_;
+    value.assign(faces.size(), 0);
+    std::vector<std::array<char, 3>>& extend = extend_;
+    extend.assign(faces.size(), std::array<char, 3>{0, 0, 0});
     for(std::size_t f = faces.size(); f-- > 0;)
     {
       double worst = std::numeric_limits<double>::infinity();
@@ -113,7 +124,8 @@ struct Multi_face_removal
     if(out.new_worst <= 0) return false;
 
     // The chosen faces, and the new cells on their boundary edges.
-    std::vector<int> stack = {0};
+    std::vector<int>& stack = stack_;
+    stack.assign(1, 0);
     std::size_t chosen = 0;
     out.old_worst = std::numeric_limits<double>::infinity();
     while(!stack.empty())

@@ -150,7 +150,9 @@ private:
 };
 
 /// What a `Mesh_complex_3_in_triangulation_3` knows of its features: vertex
-/// dimensions, curve edges, corners and surface patches, by view vertex id.
+/// dimensions, curve edges, corners and surface patches, by view vertex id. The
+/// vertices of facets of the complex between two cells of the same subdomain (an
+/// embedded surface) count as corners: they stay fixed, so the surface does.
 template <class C3T3, class View>
 Feature_hints c3t3_feature_hints(const C3T3& c3t3, const View& view)
 {
@@ -163,6 +165,10 @@ Feature_hints c3t3_feature_hints(const C3T3& c3t3, const View& view)
   for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
     hints.corners.push_back(view.index(v));
   std::map<typename C3T3::Surface_patch_index, int> patch_ids;
+  const auto& tr = c3t3.triangulation();
+  auto region = [&](typename C3T3::Cell_handle c) {
+    return std::make_pair(!tr.is_infinite(c) && c3t3.is_in_complex(c), c3t3.subdomain_index(c));
+  };
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
   {
     const auto id = patch_ids.emplace(c3t3.surface_patch_index(*f), static_cast<int>(patch_ids.size())).first->second;
@@ -170,6 +176,10 @@ Feature_hints c3t3_feature_hints(const C3T3& c3t3, const View& view)
     for(int k = 0, m = 0; k < 4; ++k)
       if(k != f->second) t[m++] = view.index(f->first->vertex(k));
     hints.facet_patches.push_back({t, id});
+    // A facet between two cells of one region is an embedded surface, which no
+    // volume or interface rule holds in place: its vertices stay where they are.
+    if(region(f->first) == region(f->first->neighbor(f->second)))
+      hints.corners.insert(hints.corners.end(), t.begin(), t.end());
   }
   return hints;
 }
