@@ -12,11 +12,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
+#include <map>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace bodt_test;
@@ -195,6 +199,82 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_LE(phases, process.at("smoothing").get<double>());
   EXPECT_GT(process.at("read").get<double>(), 0.0);
   EXPECT_GT(process.at("quality_before_and_after").get<double>(), 0.0);
+}
+
+// Meshes that are not what they seem say so: the run prints how many vertices it
+// fixed on a crack and how many triangles it kept as embedded surfaces, the report
+// gives the same counts, and a mesh with neither prints neither line.
+TEST(Cli, CracksAndEmbeddedSurfacesAreCountedInTheSummary)
+{
+  const int n = 3;
+  auto k_of = [](int v) { return v / ((n + 1) * (n + 1)); };
+  auto j_of = [](int v) { return v / (n + 1) % (n + 1); };
+  // Embedded: every face on the grid plane k = 2 between two cells of label 1.
+  BODT::Tet_mesh embedded = test_mesh();
+  std::map<std::array<int, 3>, std::vector<int>> faces;   // sorted face -> labels of its cells
+  for(std::size_t t = 0; t < embedded.tets.size(); ++t)
+    for(int i = 0; i < 4; ++i)
+    {
+      std::array<int, 3> f;
+      for(int a = 0, b = 0; a < 4; ++a)
+        if(a != i) f[b++] = embedded.tets[t][a];
+      std::sort(f.begin(), f.end());
+      faces[f].push_back(embedded.tet_labels[t]);
+    }
+  for(const auto& [f, labels] : faces)
+    if(k_of(f[0]) == 2 && k_of(f[1]) == 2 && k_of(f[2]) == 2 && labels == std::vector<int>{1, 1})
+    {
+      embedded.triangles.push_back(f);
+      embedded.triangle_labels.push_back(7);
+    }
+  ASSERT_GT(embedded.triangles.size(), 4u);
+  // Crack: the vertices of plane k = 2 with j < 2 doubled, the cells above using the copies.
+  BODT::Tet_mesh crack = test_mesh();
+  std::map<int, int> twin;
+  for(int v = 0; v < static_cast<int>(crack.points.size()); ++v)
+    if(k_of(v) == 2 && j_of(v) < 2)
+    {
+      twin[v] = static_cast<int>(crack.points.size());
+      crack.points.push_back(crack.points[v]);
+      crack.vertex_refs.push_back(0);
+    }
+  for(auto& t : crack.tets)
+    if(std::all_of(t.begin(), t.end(), [&](int v) { return k_of(v) >= 2; }))
+      for(int& v : t)
+        if(twin.count(v)) v = twin[v];
+
+  const fs::path dir = tmp_dir();
+  struct Case
+  {
+    const char* name;
+    const BODT::Tet_mesh& mesh;
+    std::size_t on_cracks_at_least, embedded;
+  };
+  const BODT::Tet_mesh plain = test_mesh();
+  for(const Case& c : {Case{"plain", plain, 0, 0}, Case{"embedded", embedded, 0, embedded.triangles.size()},
+                       Case{"crack", crack, 2 * twin.size(), 0}})
+  {
+    SCOPED_TRACE(c.name);
+    const fs::path in = dir / (std::string(c.name) + ".mesh");
+    BODT::IO::write_medit(in.string(), c.mesh);
+    std::string out;
+    ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --iterations 3 --report " +
+                           q(dir / "r.json"),
+                       out, dir),
+              0)
+        << out;
+    const nlohmann::json r = nlohmann::json::parse(read_text(dir / "r.json")).at("result");
+    const std::size_t on_cracks = r.at("vertices").at("on_cracks"), kept = r.at("embedded_triangles");
+    EXPECT_GE(on_cracks, c.on_cracks_at_least);
+    EXPECT_EQ(on_cracks > 0, c.on_cracks_at_least > 0);
+    EXPECT_EQ(kept, c.embedded);
+    const std::string crack_line = std::to_string(on_cracks) + " vertices fixed on cracks";
+    const std::string embedded_line = std::to_string(kept) + " triangles inside subdomains kept as embedded surfaces";
+    EXPECT_EQ(out.find(crack_line) != std::string::npos, on_cracks > 0) << out;
+    EXPECT_EQ(out.find(embedded_line) != std::string::npos, kept > 0) << out;
+    EXPECT_EQ(out.find("on cracks") != std::string::npos, on_cracks > 0) << out;
+    EXPECT_EQ(out.find("embedded surfaces") != std::string::npos, kept > 0) << out;
+  }
 }
 
 TEST(Cli, ZeroIterationsRunsUntilConvergence)
