@@ -14,7 +14,7 @@
 // last variant: their shape and how many of their faces and vertices are on the
 // boundary.
 //
-//   bench_pipeline [--small] [--iterations N] [--flip-threshold Q] [--flip-outside] [--worst N]
+//   bench_pipeline [--small] [--iterations N] [--flip-threshold Q] [--flip-outside] [--worst N] [--retries-after-moves K]
 //                  [--only GENERATED_INPUT] [--threads N] [mesh or .off files...]
 #include "compare/compare.h"
 #include "inputs/generated_inputs.h"
@@ -183,6 +183,8 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--iterations") && i + 1 < argc) iterations = std::stoul(argv[++i]);
     else if(!std::strcmp(argv[i], "--flip-threshold") && i + 1 < argc) flip_options.quality_threshold = std::stod(argv[++i]);
     else if(!std::strcmp(argv[i], "--flip-outside")) flip_options.flip_outside = true;
+    else if(!std::strcmp(argv[i], "--retries-after-moves") && i + 1 < argc)
+      flip_options.retries_after_moves = std::stoul(argv[++i]);
     else if(!std::strcmp(argv[i], "--worst") && i + 1 < argc) worst_listed = std::stoul(argv[++i]);
     else if(!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
     else if(!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::stoi(argv[++i]);

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -247,6 +248,44 @@ TEST(Quality_measure, WorstFirstComparison)
 
 // Edge removal, the 3-2 flip among them: the ring around an axis edge, for
 // several heights; the pass ends in the better of the two configurations.
+// When a cell whose flips failed is tried again: not before its wait (1, 2, 4, 8
+// passes after 1, 2, 3, 4 failures), and only once something within one edge of it
+// changed since the failure; after `retries_after_moves` failures, only a new
+// connectivity counts, moves alone do not.
+TEST(Flips, FailedCellsAreRetriedAfterTheirWaitAndAChange)
+{
+  BODT::Flip_history h;
+  h.retries_after_moves = 1;
+  h.region_stamp.assign(10, 0);
+  h.topology_stamp.assign(10, 0);
+  const std::array<int, 4> cell{1, 2, 3, 4};
+  EXPECT_TRUE(h.worth_trying(cell));   // never tried
+  h.pass = 1;
+  h.clock = 5;
+  h.record_failure(cell);
+  h.pass = 2;
+  EXPECT_FALSE(h.worth_trying(cell));   // nothing changed
+  h.region_stamp[7] = 6;                // a vertex that is not the cell's
+  EXPECT_FALSE(h.worth_trying(cell));
+  h.region_stamp[3] = 6;                // a vertex within one edge moved
+  EXPECT_TRUE(h.worth_trying(cell));
+  h.clock = 7;
+  h.record_failure(cell);               // second failure, at pass 2: wait 2
+  h.region_stamp[2] = 8;
+  h.topology_stamp[2] = 8;
+  h.pass = 3;
+  EXPECT_FALSE(h.worth_trying(cell));   // within the wait
+  h.pass = 4;
+  h.topology_stamp[2] = 0;
+  EXPECT_FALSE(h.worth_trying(cell));   // moves alone no longer count
+  h.star_changed(4);                    // a flip gave vertex 4 a new star, at clock 7
+  EXPECT_FALSE(h.worth_trying(cell));   // not after the failure
+  h.clock = 9;
+  h.star_changed(4);
+  EXPECT_TRUE(h.worth_trying(cell));
+  EXPECT_EQ(h.region_stamp[4], 9u);
+}
+
 TEST(Flips, EdgeRemovalChoosesTheBetterConfiguration)
 {
   for(int m : {3, 4, 5, 6, 7})

@@ -24,15 +24,15 @@ namespace BODT_3 {
 
 /// What earlier passes learnt: the cells (by sorted vertex ids) tried in vain,
 /// when and how many times in a row, and per vertex when it or a vertex sharing an
-/// edge with it last changed (moved, or got a new star), on a clock that the caller
+/// edge with it last changed (moved, or got a new star), and when its connectivity
+/// last changed (a new star by a flip or an insertion), on a clock that the caller
 /// advances at each sweep and the pass at each flip. A cell tried in vain is tried
 /// again only once its neighbourhood changed (its flips depend on nothing else,
 /// except for multi-face removals reaching further), and, after k failures in a
 /// row, only every 2^(k-1) passes (at most 8): smoothing keeps moving the vertices
 /// of a bad region a little, and such cells would otherwise be retried every pass.
-/// (Waits of 1, 4, 16 cost a quarter less flip time on the bench inputs for the
-/// same angles, but lowered the shared bunny.mesh from 0.92 to 0.65 degrees:
-/// doc/stages.md.)
+/// After `retries_after_moves` failures, moves alone no longer make it worth
+/// trying: only a new connectivity around it does (doc/stages.md measures both).
 struct Flip_history
 {
   struct Hash
@@ -52,8 +52,25 @@ struct Flip_history
   };
   std::size_t clock = 0;
   std::size_t pass = 0;   // set by the caller
-  std::vector<std::size_t> region_stamp;
+  std::size_t retries_after_moves = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> region_stamp;     // last change within one edge
+  std::vector<std::size_t> topology_stamp;   // last connectivity change within one edge
   std::unordered_map<std::array<int, 4>, Failure, Hash> failed;
+
+  static std::size_t stamp(const std::vector<std::size_t>& stamps, int v)
+  {
+    return v >= 0 && v < static_cast<int>(stamps.size()) ? stamps[v] : 0;
+  }
+
+  /// Marks vertex `v`'s star changed now (a flip or an insertion).
+  void star_changed(int v)
+  {
+    for(std::vector<std::size_t>* stamps : {&region_stamp, &topology_stamp})
+    {
+      if(v >= static_cast<int>(stamps->size())) stamps->resize(v + 1, 0);
+      (*stamps)[v] = clock;
+    }
+  }
 
   bool worth_trying(const std::array<int, 4>& ids) const
   {
@@ -62,8 +79,9 @@ struct Flip_history
     const Failure& f = it->second;
     const std::size_t wait = std::size_t(1) << std::min<std::size_t>(f.count - 1, 3);
     if(pass < f.pass + wait) return false;
+    const std::vector<std::size_t>& changes = f.count > retries_after_moves ? topology_stamp : region_stamp;
     for(int v : ids)
-      if(v < static_cast<int>(region_stamp.size()) && region_stamp[v] > f.clock) return true;
+      if(stamp(changes, v) > f.clock) return true;
     return false;
   }
 
@@ -72,6 +90,18 @@ struct Flip_history
     auto ins = failed.emplace(ids, Failure{clock, pass, 1});
     if(!ins.second) ins.first->second = Failure{clock, pass, ins.first->second.count + 1};
   }
+};
+
+/// A cell the caller measured already (from the same points, in the cell's vertex
+/// order, so that its quality is the one the pass would compute): a flip pass can
+/// start from such cells without reading the triangulation's cells and vertices.
+template <class Cell_handle, class Vertex_handle>
+struct Measured_cell
+{
+  Cell_handle cell;
+  std::array<Vertex_handle, 4> vertices;   // the cell's, in its order
+  std::array<int, 4> ids;                  // their `vertex_id`s
+  double quality;                          // by the pass's measure
 };
 
 /// One topology pass: the cells whose minimum dihedral sine is below the quality
@@ -85,16 +115,18 @@ struct Flip_history
 ///
 /// `touched` receives the vertices of every cell created (with repetitions).
 /// `history` (optional) lets the pass skip cells tried in vain before whose
-/// neighbourhood has not changed since. `candidates` (optional) are the cells to
-/// start from, a superset of the flippable cells below the threshold (the caller
-/// may know them without measuring every cell); by default every finite cell is
-/// measured. The result does not depend on which superset is given.
+/// neighbourhood has not changed since. `candidates` (optional, with the minimum
+/// dihedral sine as measure) are the cells to start from, flippable and measured,
+/// a superset of the flippable cells below the threshold
+/// (the caller may know them without measuring every cell); by default every finite
+/// cell is measured. The result does not depend on which superset is given.
 template <class Labels, class Vertex_id>
 Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral_bounds& bounds,
                          const Vertex_id& vertex_id, std::vector<typename Labels::Vertex_handle>& touched,
                          Flip_history* history = nullptr,
                          Quality_measure measure = Quality_measure::min_dihedral_sine,
-                         const std::vector<typename Labels::Cell_handle>* candidates = nullptr)
+                         const std::vector<Measured_cell<typename Labels::Cell_handle,
+                                                         typename Labels::Vertex_handle>>* candidates = nullptr)
 {
   using Vertex_handle = typename Labels::Vertex_handle;
   using Cell_handle = typename Labels::Cell_handle;
@@ -135,8 +167,16 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
   };
   auto& tr = labels.triangulation();
   const std::size_t cells = labels.tds().number_of_cells();   // O(1), unlike counting the finite ones
+  CGAL_precondition(!candidates || measure == Quality_measure::min_dihedral_sine);
   if(candidates)
-    for(Cell_handle c : *candidates) push(c);
+    for(const auto& m : *candidates)
+    {
+      CGAL_assertion(ctx.flippable(labels.region(m.cell)));
+      if(!(m.quality < opt.quality_threshold)) continue;
+      Entry e{m.quality, m.ids, m.cell, m.vertices};
+      std::sort(e.ids.begin(), e.ids.end());
+      queue.push(e);
+    }
   else
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) push(c);
 
@@ -231,11 +271,7 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
           const int id = vertex_id(n->vertex(k));
           if(id >= static_cast<int>(touched_at.size())) touched_at.resize(id + 1, 0);
           touched_at[id] = flips_done;
-        }
-        if(history && !tr.is_infinite(n->vertex(k)))
-        {
-          const int id = vertex_id(n->vertex(k));
-          if(id < static_cast<int>(history->region_stamp.size())) history->region_stamp[id] = history->clock;
+          if(history) history->star_changed(id);
         }
       }
     for(Cell_handle n : created)

@@ -114,8 +114,10 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   std::vector<typename Labels::Vertex_handle> touched;
   std::vector<int> changed;
   Flip_history history;
+  history.retries_after_moves = opt.flips.retries_after_moves;
   std::vector<typename Labels::Cell_handle> candidates;
   std::vector<std::size_t> changed_at(mesh.number_of_vertices(), 0);   // per vertex: when it last moved or flipped
+  std::vector<std::size_t> new_star_at(mesh.number_of_vertices(), 0);  // per vertex: when its star last changed
 
   // Insertion: its budget, and how existing vertices move, by their view id.
   using Vertex_handle = typename Labels::Vertex_handle;
@@ -139,11 +141,17 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   // The last change within one edge of each vertex, for a pass's history.
   auto stamp_regions = [&](Flip_history& h) {
     h.region_stamp.resize(mesh.number_of_vertices());
+    h.topology_stamp.resize(mesh.number_of_vertices());
     workers.for_each(0, static_cast<int>(mesh.number_of_vertices()), [&](char&, int v) {
-      std::size_t stamp = changed_at[v];
+      std::size_t stamp = changed_at[v], star = new_star_at[v];
       for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
-        for(int u : mesh.incidences[k].face) stamp = std::max(stamp, changed_at[u]);
+        for(int u : mesh.incidences[k].face)
+        {
+          stamp = std::max(stamp, changed_at[u]);
+          star = std::max(star, new_star_at[u]);
+        }
       h.region_stamp[v] = stamp;
+      h.topology_stamp[v] = star;
     }, 4096);
   };
   // After the triangulation changed: re-read it, classify new vertices, mark stars changed.
@@ -168,7 +176,8 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     for(auto v : touched)
       if(!labels.triangulation().is_infinite(v)) changed.push_back(view.index(v));
     changed_at.resize(mesh.number_of_vertices(), history.clock);
-    for(int v : changed) changed_at[v] = history.clock;
+    new_star_at.resize(mesh.number_of_vertices(), history.clock);
+    for(int v : changed) changed_at[v] = new_star_at[v] = history.clock;
     sweep.refresh(changed);
     charge(result.phases.reread);
   };
@@ -176,6 +185,25 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   // With the guard on, the sweep knows every mesh cell's minimum dihedral sine:
   // the passes start from the cells below their thresholds.
   const bool guard_knows = opt.quality_guard && opt.quality_measure == Quality_measure::min_dihedral_sine;
+  // For the flip pass, the mesh cells below its threshold measured from the flat
+  // points, in each cell's vertex order, as the pass would measure them.
+  using Measured = Measured_cell<typename Labels::Cell_handle, Vertex_handle>;
+  std::vector<Measured> measured;
+  std::vector<std::vector<Measured>> block_measured;
+  auto measured_below = [&](double threshold) {
+    block_measured.assign(cell_blocks(), {});
+    for_cell_blocks([&](int b, std::size_t c) {
+      if(!mesh.in_mesh[c] || !(sweep.cell_quality(static_cast<int>(c)) < threshold)) return;
+      const auto& q = mesh.cells[c];
+      Measured m{view.cells()[c], {}, q, 0.0};
+      for(int k = 0; k < 4; ++k) m.vertices[k] = view.vertices()[q[k]];
+      m.quality = tet_quality(opt.quality_measure, mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]],
+                              mesh.points[q[3]]);
+      block_measured[b].push_back(m);
+    });
+    measured.clear();
+    for(const auto& found : block_measured) measured.insert(measured.end(), found.begin(), found.end());
+  };
   std::vector<std::vector<typename Labels::Cell_handle>> block_candidates;
   auto cells_below = [&](double threshold) {
     block_candidates.assign(cell_blocks(), {});
@@ -208,15 +236,17 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     }
     if(opt.topology_optimization)
     {
+      const double start = timer.time();   // the pass's cost includes finding where to start
       history.pass = it;
       stamp_regions(history);
       touched.clear();
       added.clear();
       // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
       const bool known = guard_knows && !opt.flips.flip_outside;
-      if(known) cells_below(opt.flips.quality_threshold);
+      if(known) measured_below(opt.flips.quality_threshold);
       stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure,
-                                 known ? &candidates : nullptr);
+                                 known ? &measured : nullptr);
+      stats.topology.seconds = timer.time() - start;
       charge(result.phases.flips);
       if(stats.topology.total() > 0) reread();
     }
@@ -232,6 +262,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     }
     if(budget > 0)
     {
+      const double start = timer.time();
       touched.clear();
       added.clear();
       insertion_history.pass = it;
@@ -242,6 +273,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
                                        opt.moving_vertices == Moving_vertices::ALL, motion, vertex_id, added,
                                        touched, &insertion_history, guard_knows ? &candidates : nullptr,
                                        &volume_budget);
+      stats.insertion.seconds = timer.time() - start;
       budget -= stats.insertion.vertices_added;
       history.clock = insertion_history.clock;
       charge(result.phases.insertion);
