@@ -5,6 +5,7 @@
 #include "inputs/generated_inputs.h"
 #include "test_support.h"
 
+#include <CGAL/BODT_3/IO/c3t3_conversion.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/boundary_distance.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -467,6 +468,37 @@ TEST(Volume, InterfaceNormalComesFromTheSideWithSmallerFaces)
               1e-10 * before.volume_per_subdomain.at(1));
   EXPECT_NEAR(after.volume_per_subdomain.at(2), before.volume_per_subdomain.at(2),
               1e-10 * before.volume_per_subdomain.at(2));
+}
+
+// The volume promise over CGAL-meshed inputs whose features only tensor voting
+// finds: each generated input as a file would carry it without its edges, corners
+// and triangles, smoothed with the default pipeline (every vertex class moves:
+// interior, surface, interface, feature found by voting), every subdomain's volume
+// kept to 1e-11 of it (the run's budget), none inverted.
+TEST(Volume, KeptWithFeaturesFoundByTensorVoting)
+{
+  for(Shape shape : {Shape::sharp_part, Shape::two_subdomains, Shape::genus2})
+  {
+    SCOPED_TRACE(name(shape));
+    BODT::Tet_mesh m = BODT::c3t3_to_tet_mesh(make_input(shape, Size::small).c3t3);
+    m.edges.clear();
+    m.edge_labels.clear();
+    m.corners.clear();
+    m.required_vertices.clear();
+    m.triangles.clear();
+    m.triangle_labels.clear();
+    const auto before = BODT::mesh_quality(m);
+    BODT::Smoothing_options opt;
+    opt.max_iteration_number = 10;
+    const auto r = BODT::smooth(m, opt);
+    EXPECT_TRUE(r.used_tensor_voting);
+    EXPECT_GT(r.feature_vertices + r.surface_vertices, 0u);
+    EXPECT_GT(r.moved_vertices, m.points.size() / 4);
+    const auto after = BODT::mesh_quality(m);
+    EXPECT_EQ(after.inverted_tets, 0u);
+    for(const auto& [label, volume] : before.volume_per_subdomain)
+      EXPECT_NEAR(after.volume_per_subdomain.at(label), volume, 1e-11 * volume) << "subdomain " << label;
+  }
 }
 
 TEST(Nodt, AFlatFaceStaysFlat)
