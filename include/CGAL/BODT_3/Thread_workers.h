@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cstddef>
 
 namespace CGAL {
 namespace BODT_3 {
@@ -19,6 +20,15 @@ namespace BODT_3 {
 inline int thread_count(int requested)
 {
   return requested > 0 ? requested : std::max(1, tbb::info::default_concurrency());
+}
+
+/// Items per block of the whole-mesh scans that run in blocks (`for_blocks`).
+constexpr std::size_t scan_block = std::size_t(1) << 14;
+
+/// The number of blocks of `block` items that cover `n` items.
+inline int block_count(std::size_t n, std::size_t block = scan_block)
+{
+  return static_cast<int>((n + block - 1) / block);
 }
 
 /// Loops over index ranges on a fixed number of threads (TBB, in its own arena),
@@ -46,6 +56,18 @@ public:
         for(int i = r.begin(); i != r.end(); ++i) f(w, i);
       });
     });
+  }
+
+  /// Calls f(worker, b, begin, end) for the blocks b, [begin, end), of `block`
+  /// consecutive indices that cover [0, n), one task per block: results kept per
+  /// block and merged in block order are the same on any number of threads.
+  template <class F>
+  void for_blocks(std::size_t n, const F& f, std::size_t block = scan_block)
+  {
+    for_each(0, block_count(n, block), [&](Worker& w, int b) {
+      const std::size_t begin = static_cast<std::size_t>(b) * block;
+      f(w, b, begin, std::min(n, begin + block));
+    }, 1);
   }
 
   /// Visits every worker (in no particular order).

@@ -114,18 +114,16 @@ public:
       if(it == sums.end()) sums.emplace_back(label, v);
       else it->second += v;
     };
-    constexpr std::size_t block = 1 << 14;
-    std::vector<Sums> blocks((mesh.cells.size() + block - 1) / block);
-    Thread_workers<char>(threads).for_each(0, static_cast<int>(blocks.size()), [&](char&, int b) {
-      const std::size_t first = static_cast<std::size_t>(b) * block;
-      for(std::size_t c = first; c < std::min(mesh.cells.size(), first + block); ++c)
+    std::vector<Sums> blocks(static_cast<std::size_t>(block_count(mesh.cells.size())));
+    Thread_workers<char>(threads).for_blocks(mesh.cells.size(), [&](char&, int b, std::size_t begin, std::size_t end) {
+      for(std::size_t c = begin; c < end; ++c)
       {
         if(!mesh.in_mesh[c]) continue;
         const auto& q = mesh.cells[c];
         add(blocks[static_cast<std::size_t>(b)], mesh.subdomain[c],
             tet_volume(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]));
       }
-    }, 1);
+    });
     Sums volumes;
     for(const Sums& sums : blocks)
       for(const auto& [label, v] : sums) add(volumes, label, v);

@@ -185,20 +185,18 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
     }, 1024);
   }
   // Blocks of a fixed size, merged in order: the sums do not depend on the threads.
-  constexpr std::size_t block = 1 << 14;
-  const int blocks = static_cast<int>((measured.size() + block - 1) / block);
-  std::vector<Quality_accumulator> parts(static_cast<std::size_t>(blocks), Quality_accumulator(opt));
-  workers.for_each(0, blocks, [&](char&, int b) {
+  std::vector<Quality_accumulator> parts(static_cast<std::size_t>(block_count(measured.size())),
+                                         Quality_accumulator(opt));
+  workers.for_blocks(measured.size(), [&](char&, int b, std::size_t begin, std::size_t end) {
     Quality_accumulator& acc = parts[static_cast<std::size_t>(b)];
-    const std::size_t end = std::min(measured.size(), (static_cast<std::size_t>(b) + 1) * block);
-    for(std::size_t k = static_cast<std::size_t>(b) * block; k < end; ++k)
+    for(std::size_t k = begin; k < end; ++k)
     {
       const std::size_t t = measured[k];
       const auto& c = mesh.tets[t];
       acc.add(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]], mesh.tet_labels[t],
               on_boundary[c[0]] + on_boundary[c[1]] + on_boundary[c[2]] + on_boundary[c[3]]);
     }
-  }, 1);
+  });
   Quality_accumulator acc(opt);
   for(const Quality_accumulator& part : parts) acc.merge(part);
   return acc.result(static_cast<std::size_t>(std::count(used.begin(), used.end(), 1)));

@@ -88,14 +88,12 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   // Whole-mesh scans run in blocks of cells, merged in block order: the same
   // result on any number of threads.
   Thread_workers<char> workers(opt.threads);
-  constexpr int block = 1 << 14;
-  auto cell_blocks = [&mesh] { return static_cast<int>((mesh.cells.size() + block - 1) / block); };
+  auto cell_blocks = [&mesh] { return block_count(mesh.cells.size()); };
   auto for_cell_blocks = [&](const auto& f) {
-    workers.for_each(0, cell_blocks(), [&](char&, int b) {
-      const std::size_t end = std::min(mesh.cells.size(), (static_cast<std::size_t>(b) + 1) * block);
-      for(std::size_t c = static_cast<std::size_t>(b) * block; c < end; ++c)
+    workers.for_blocks(mesh.cells.size(), [&](char&, int b, std::size_t begin, std::size_t end) {
+      for(std::size_t c = begin; c < end; ++c)
         if(mesh.in_mesh[c]) f(b, c);
-    }, 1);
+    });
   };
   std::vector<Dihedral_bounds> block_bounds(cell_blocks(), Dihedral_bounds::empty());
   for_cell_blocks([&](int b, std::size_t c) {

@@ -191,15 +191,13 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
     return std::string();
   };
   const int threads = faces ? faces->threads : 1;
-  constexpr std::size_t block = 1 << 14;
-  const int blocks = static_cast<int>((nt + block - 1) / block);
-  auto block_end = [nt](int b) { return std::min(nt, (static_cast<std::size_t>(b) + 1) * block); };
+  const int blocks = block_count(nt);
   std::vector<std::size_t> first_bad(static_cast<std::size_t>(blocks), nt);
   Thread_workers<char> workers(threads);
-  workers.for_each(0, blocks, [&](char&, int b) {
-    for(std::size_t t = static_cast<std::size_t>(b) * block; t < block_end(b); ++t)
+  workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
+    for(std::size_t t = begin; t < end; ++t)
       if(!problem(t).empty()) { first_bad[static_cast<std::size_t>(b)] = t; return; }
-  }, 1);
+  });
   for(std::size_t t : first_bad)
     if(t < nt) fail(problem(t));
   std::vector<char> used(n, 0);
@@ -233,8 +231,8 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
   }
   // Two cells on one face must induce opposite orientations on it.
   std::fill(first_bad.begin(), first_bad.end(), nt);
-  workers.for_each(0, blocks, [&](char&, int b) {
-    for(std::size_t t = static_cast<std::size_t>(b) * block; t < block_end(b); ++t)
+  workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
+    for(std::size_t t = begin; t < end; ++t)
       for(int i = 0; i < 4; ++i)
       {
         const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
@@ -246,7 +244,7 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
           return;
         }
       }
-  }, 1);
+  });
   for(std::size_t t : first_bad)
     for(int i = 0; t < nt && i < 4; ++i)
     {
@@ -265,14 +263,14 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
     const auto& q = mesh.tets[t];
     cells[t] = tds.create_cell(vh[q[0]], vh[q[1]], vh[q[2]], vh[q[3]]);
   }
-  workers.for_each(0, blocks, [&](char&, int b) {
-    for(std::size_t t = static_cast<std::size_t>(b) * block; t < block_end(b); ++t)
+  workers.for_blocks(nt, [&](char&, int, std::size_t begin, std::size_t end) {
+    for(std::size_t t = begin; t < end; ++t)
       for(int i = 0; i < 4; ++i)
       {
         const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
         if(m >= 0) cells[t]->set_neighbor(i, cells[static_cast<std::size_t>(m / 4)]);
       }
-  }, 1);
+  });
   workers.for_each(0, n, [&](char&, int v) {
     const int k = faces->vertex_cells_begin[v];
     if(k < faces->vertex_cells_begin[v + 1]) vh[v]->set_cell(cells[static_cast<std::size_t>(faces->vertex_cells[k])]);
@@ -396,8 +394,8 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
   for(std::size_t t = 0; t < nt; ++t)
     if(mesh.in_mesh(t, all_zero)) label[t] = subdomain(t);
   std::vector<std::vector<std::pair<std::size_t, int>>> block_faces(static_cast<std::size_t>(blocks));
-  workers.for_each(0, blocks, [&](char&, int b) {
-    for(std::size_t t = static_cast<std::size_t>(b) * block; t < block_end(b); ++t)
+  workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
+    for(std::size_t t = begin; t < end; ++t)
       for(int i = 0; i < 4; ++i)
       {
         const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
@@ -405,7 +403,7 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
         if(!(label[t] == other) && (m < 0 || static_cast<std::size_t>(m / 4) > t))
           block_faces[static_cast<std::size_t>(b)].emplace_back(t, i);
       }
-  }, 1);
+  });
   std::map<std::pair<Subdomain_index, Subdomain_index>, Surface_patch_index> derived;
   for(const auto& found : block_faces)
     for(const auto& [t, i] : found)

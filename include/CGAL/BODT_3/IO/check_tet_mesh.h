@@ -237,11 +237,10 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
     std::size_t first_positive, first_negative, first_flat;
   };
   const std::size_t nt = mesh.tets.size();
-  constexpr std::size_t block = 1 << 14;
-  std::vector<Orientations> blocks((nt + block - 1) / block, Orientations{0, 0, nt, nt, nt});
-  Thread_workers<char>(threads).for_each(0, static_cast<int>(blocks.size()), [&](char&, int b) {
+  std::vector<Orientations> blocks(static_cast<std::size_t>(block_count(nt)), Orientations{0, 0, nt, nt, nt});
+  Thread_workers<char>(threads).for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
     Orientations& o = blocks[static_cast<std::size_t>(b)];
-    for(std::size_t t = static_cast<std::size_t>(b) * block; t < std::min(nt, (static_cast<std::size_t>(b) + 1) * block); ++t)
+    for(std::size_t t = begin; t < end; ++t)
     {
       const auto& c = mesh.tets[t];
       const CGAL::Orientation sign = CGAL::orientation(mesh.points[c[0]], mesh.points[c[1]],
@@ -250,7 +249,7 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
       else if(sign == CGAL::NEGATIVE) { if(o.negative++ == 0) o.first_negative = t; }
       else { o.first_flat = t; return; }
     }
-  }, 1);
+  });
   std::size_t positive = 0, negative = 0, first_positive = nt, first_negative = nt;
   for(const Orientations& o : blocks)
   {
