@@ -51,6 +51,7 @@ public:
 
   Mesh& mesh() { return mesh_; }
   const Mesh& mesh() const { return mesh_; }
+  const Labels& labels() const { return labels_; }
   const std::vector<Cell_handle>& cells() const { return cells_; }
   const std::vector<Vertex_handle>& vertices() const { return handles_; }
   int index(Vertex_handle v) const
@@ -165,10 +166,6 @@ Feature_hints c3t3_feature_hints(const C3T3& c3t3, const View& view)
   for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
     hints.corners.push_back(view.index(v));
   std::map<typename C3T3::Surface_patch_index, int> patch_ids;
-  const auto& tr = c3t3.triangulation();
-  auto region = [&](typename C3T3::Cell_handle c) {
-    return std::make_pair(!tr.is_infinite(c) && c3t3.is_in_complex(c), c3t3.subdomain_index(c));
-  };
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
   {
     const auto id = patch_ids.emplace(c3t3.surface_patch_index(*f), static_cast<int>(patch_ids.size())).first->second;
@@ -178,7 +175,7 @@ Feature_hints c3t3_feature_hints(const C3T3& c3t3, const View& view)
     hints.facet_patches.push_back({t, id});
     // A facet between two cells of one region is an embedded surface, which no
     // volume or interface rule holds in place: its vertices stay where they are.
-    if(region(f->first) == region(f->first->neighbor(f->second)))
+    if(view.labels().region(f->first) == view.labels().region(f->first->neighbor(f->second)))
       hints.corners.insert(hints.corners.end(), t.begin(), t.end());
   }
   return hints;

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -183,34 +184,29 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   // With the guard on, the sweep knows every mesh cell's minimum dihedral sine:
   // the passes start from the cells below their thresholds.
   const bool guard_knows = opt.quality_guard && opt.quality_measure == Quality_measure::min_dihedral_sine;
-  // For the flip pass, the mesh cells below its threshold measured from the flat
-  // points, in each cell's vertex order, as the pass would measure them.
+  // The mesh cells the guard measured below a threshold, as `make(c)` gives them,
+  // in cell order.
+  auto collect_below = [&](double threshold, auto& out, const auto& make) {
+    std::vector<std::decay_t<decltype(out)>> found(static_cast<std::size_t>(cell_blocks()));
+    for_cell_blocks([&](int b, std::size_t c) {
+      if(sweep.cell_quality(static_cast<int>(c)) < threshold) found[static_cast<std::size_t>(b)].push_back(make(c));
+    });
+    out.clear();
+    for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());
+  };
+  // For the flip pass, measured again from the flat points in each cell's vertex
+  // order, as the pass would measure them; for the insertion pass, the cells.
   using Measured = Measured_cell<typename Labels::Cell_handle, Vertex_handle>;
   std::vector<Measured> measured;
-  std::vector<std::vector<Measured>> block_measured;
-  auto measured_below = [&](double threshold) {
-    block_measured.assign(cell_blocks(), {});
-    for_cell_blocks([&](int b, std::size_t c) {
-      if(!mesh.in_mesh[c] || !(sweep.cell_quality(static_cast<int>(c)) < threshold)) return;
-      const auto& q = mesh.cells[c];
-      Measured m{view.cells()[c], {}, q, 0.0};
-      for(int k = 0; k < 4; ++k) m.vertices[k] = view.vertices()[q[k]];
-      m.quality = tet_quality(opt.quality_measure, mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]],
-                              mesh.points[q[3]]);
-      block_measured[b].push_back(m);
-    });
-    measured.clear();
-    for(const auto& found : block_measured) measured.insert(measured.end(), found.begin(), found.end());
+  auto measure = [&](std::size_t c) {
+    const auto& q = mesh.cells[c];
+    Measured m{view.cells()[c], {}, q, 0.0};
+    for(int k = 0; k < 4; ++k) m.vertices[k] = view.vertices()[q[k]];
+    m.quality = tet_quality(opt.quality_measure, mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]],
+                            mesh.points[q[3]]);
+    return m;
   };
-  std::vector<std::vector<typename Labels::Cell_handle>> block_candidates;
-  auto cells_below = [&](double threshold) {
-    block_candidates.assign(cell_blocks(), {});
-    for_cell_blocks([&](int b, std::size_t c) {
-      if(sweep.cell_quality(static_cast<int>(c)) < threshold) block_candidates[b].push_back(view.cells()[c]);
-    });
-    candidates.clear();
-    for(const auto& found : block_candidates) candidates.insert(candidates.end(), found.begin(), found.end());
-  };
+  auto cell = [&](std::size_t c) { return view.cells()[c]; };
 
   const bool unlimited = opt.max_iteration_number == 0;
   const std::size_t last = unlimited ? unlimited_iteration_cap : opt.max_iteration_number;
@@ -241,7 +237,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       added.clear();
       // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
       const bool known = guard_knows && !opt.flips.flip_outside;
-      if(known) measured_below(opt.flips.quality_threshold);
+      if(known) collect_below(opt.flips.quality_threshold, measured, measure);
       stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure,
                                  known ? &measured : nullptr);
       stats.topology.seconds = timer.time() - start;
@@ -266,7 +262,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
       insertion_history.pass = it;
       insertion_history.clock = history.clock;
       stamp_regions(insertion_history);
-      if(guard_knows) cells_below(opt.insertion.quality_threshold);
+      if(guard_knows) collect_below(opt.insertion.quality_threshold, candidates, cell);
       stats.insertion = insertion_pass(labels, opt.insertion, bounds, opt.quality_measure, opt.tensor_voting, budget,
                                        opt.moving_vertices == Moving_vertices::ALL, motion, vertex_id, added,
                                        touched, &insertion_history, guard_knows ? &candidates : nullptr,
