@@ -2,6 +2,7 @@
 // approximate_dihedral_angle, counts, volumes, exact inversion test, and the
 // real meshes of ../shared/data when present.
 #include <CGAL/BODT_3/Handle_index_map.h>
+#include <CGAL/BODT_3/Id_tuple_map.h>
 #include <CGAL/BODT_3/Thread_workers.h>
 #include <CGAL/BODT_3/group_by_key.h>
 #include <CGAL/BODT_3/IO/medit.h>
@@ -276,6 +277,54 @@ TEST(Handle_index_map, InsertAllFromThreadsFindsEveryHandle)
     for(int& x : others) EXPECT_EQ(map.find(&x), -1);
     EXPECT_FALSE(map.insert(handles[9], 1));
   }
+}
+
+// The flip pass's map from vertex-id tuples: the same answers as std::map over
+// random inserts and updates (keys that differ only in order are different),
+// through several rehashes, and after clear.
+TEST(Id_tuple_map, AgreesWithStdMapThroughGrowth)
+{
+  CGAL::Random random(11);
+  CGAL::BODT_3::Id_tuple_map<4, int> map;
+  std::map<std::array<int, 4>, int> reference;
+  auto key = [&] {
+    return std::array<int, 4>{random.get_int(0, 40), random.get_int(0, 40), random.get_int(0, 40), random.get_int(0, 40)};
+  };
+  EXPECT_EQ(map.find(key()), nullptr);
+  for(int i = 0; i < 20000; ++i)
+  {
+    const auto k = key();
+    if(i % 3 == 0)
+    {
+      map.assign(k, i);
+      reference[k] = i;
+    }
+    else
+    {
+      bool inserted = false;
+      int& value = map.find_or_insert(k, -i, inserted);
+      const auto ins = reference.emplace(k, -i);
+      ASSERT_EQ(inserted, ins.second);
+      ASSERT_EQ(value, ins.first->second);
+      if(!inserted) value = reference[k] = value + 1;
+    }
+  }
+  EXPECT_EQ(map.size(), reference.size());
+  for(const auto& kv : reference)
+  {
+    const int* found = map.find(kv.first);
+    ASSERT_NE(found, nullptr);
+    ASSERT_EQ(*found, kv.second);
+  }
+  for(int i = 0; i < 1000; ++i)
+  {
+    const auto k = key();
+    const int* found = map.find(k);
+    EXPECT_EQ(found != nullptr, reference.count(k) == 1);
+  }
+  map.clear();
+  EXPECT_EQ(map.size(), 0u);
+  EXPECT_EQ(map.find(reference.begin()->first), nullptr);
 }
 
 // The parallel counting sort groups like a sequential stable one, on any number of threads.

@@ -4,6 +4,9 @@
 #define CGAL_BODT_3_EDGE_REMOVAL_H
 
 #include <CGAL/BODT_3/Flip.h>
+#include <CGAL/BODT_3/prefetch.h>
+
+#include <CGAL/Triangulation_utils_3.h>
 
 #include <algorithm>
 #include <array>
@@ -122,28 +125,27 @@ public:
     Vertex_handle u = c->vertex(i), v = c->vertex(j);
     if(ctx.is_infinite(u) || ctx.is_infinite(v) || ctx.labels.is_curve_edge(u, v)) return false;
 
+    // Around the edge as the TDS's circulator turns: cell k's neighbour across the
+    // facet opposite its vertex next_around_edge(u, v) is cell k + 1, so that
+    // vertex, ring[k], is shared by cells k - 1 and k, and cell k is
+    // {u, v, ring[k], ring[k+1]}.
     std::vector<Cell_handle>& cells = out.old_cells;
-    auto circ = ctx.triangulation().incident_cells(c, i, j), done = circ;
+    std::vector<Vertex_handle>& ring = ring_;
+    ring.clear();
+    Cell_handle x = c;
     do
     {
-      cells.push_back(circ);
+      const int next = Triangulation_utils_3::next_around_edge(x->index(u), x->index(v));
+      cells.push_back(x);
+      ring.push_back(x->vertex(next));
       if(static_cast<int>(cells.size()) > max_ring) return false;
-    } while(++circ != done);
+      x = x->neighbor(next);
+      prefetch(x);
+      prefetch(ring.back());
+    } while(x != c);
     const int m = static_cast<int>(cells.size());
     if(m < 3) return false;
 
-    // ring[k] is shared by cells k-1 and k, so cell k is {u, v, ring[k], ring[k+1]}.
-    std::vector<Vertex_handle>& ring = ring_;
-    ring.assign(m, Vertex_handle());
-    for(int k = 0; k < m; ++k)
-    {
-      const Cell_handle prev = cells[(k + m - 1) % m];
-      for(int l = 0; l < 4; ++l)
-      {
-        const Vertex_handle x = cells[k]->vertex(l);
-        if(x != u && x != v && prev->has_vertex(x)) ring[k] = x;
-      }
-    }
     if(!Flip_context<Labels>::same_orientation(cells[0], u, v, ring[0], ring[1])) std::swap(u, v);
 
     // Constrained facets (u, v, ring[k]) between cells k-1 and k.

@@ -5,6 +5,7 @@
 
 #include <CGAL/BODT_3/Edge_removal.h>
 #include <CGAL/BODT_3/Flip.h>
+#include <CGAL/BODT_3/Id_tuple_map.h>
 #include <CGAL/BODT_3/Multi_face_removal.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
 
@@ -12,11 +13,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
+#include <cstddef>
+#include <functional>
 #include <initializer_list>
 #include <limits>
 #include <queue>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -35,15 +36,6 @@ namespace BODT_3 {
 /// trying: only a new connectivity around it does (doc/stages.md measures both).
 struct Flip_history
 {
-  struct Hash
-  {
-    std::size_t operator()(const std::array<int, 4>& a) const
-    {
-      std::size_t h = 0;
-      for(int x : a) h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::size_t>(x);
-      return h;
-    }
-  };
   struct Failure
   {
     std::size_t clock;
@@ -55,7 +47,7 @@ struct Flip_history
   std::size_t retries_after_moves = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> region_stamp;     // last change within one edge
   std::vector<std::size_t> topology_stamp;   // last connectivity change within one edge
-  std::unordered_map<std::array<int, 4>, Failure, Hash> failed;
+  Id_tuple_map<4, Failure> failed;
 
   static std::size_t stamp(const std::vector<std::size_t>& stamps, int v)
   {
@@ -74,9 +66,9 @@ struct Flip_history
 
   bool worth_trying(const std::array<int, 4>& ids) const
   {
-    const auto it = failed.find(ids);
-    if(it == failed.end()) return true;
-    const Failure& f = it->second;
+    const Failure* found = failed.find(ids);
+    if(!found) return true;
+    const Failure& f = *found;
     const std::size_t wait = std::size_t(1) << std::min<std::size_t>(f.count - 1, 3);
     if(pass < f.pass + wait) return false;
     const std::vector<std::size_t>& changes = f.count > retries_after_moves ? topology_stamp : region_stamp;
@@ -87,8 +79,9 @@ struct Flip_history
 
   void record_failure(const std::array<int, 4>& ids)
   {
-    auto ins = failed.emplace(ids, Failure{clock, pass, 1});
-    if(!ins.second) ins.first->second = Failure{clock, pass, ins.first->second.count + 1};
+    bool inserted;
+    Failure& f = failed.find_or_insert(ids, Failure{clock, pass, 1}, inserted);
+    if(!inserted) f = Failure{clock, pass, f.count + 1};
   }
 };
 
@@ -151,39 +144,42 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
       return ids > o.ids;
     }
   };
-  std::priority_queue<Entry> queue;
-  auto push = [&](Cell_handle c) {
-    if(!ctx.flippable(labels.region(c))) return;
+  // The entry of cell c, if it is flippable and below the threshold.
+  auto make_entry = [&](Cell_handle c, Entry& e) {
+    if(!ctx.flippable(labels.region(c))) return false;
     const double q = ctx.quality(c);
     const double sine = measure == Quality_measure::min_dihedral_sine
                             ? q
                             : min_dihedral_sine(ctx.point(c->vertex(0)), ctx.point(c->vertex(1)),
                                                 ctx.point(c->vertex(2)), ctx.point(c->vertex(3)));
-    if(!(sine < opt.quality_threshold)) return;
-    Entry e{q, {}, c, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
+    if(!(sine < opt.quality_threshold)) return false;
+    e = Entry{q, {}, c, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
     for(int k = 0; k < 4; ++k) e.ids[k] = vertex_id(e.vertices[k]);
     std::sort(e.ids.begin(), e.ids.end());
-    queue.push(e);
+    return true;
   };
   auto& tr = labels.triangulation();
   const std::size_t cells = labels.tds().number_of_cells();   // O(1), unlike counting the finite ones
   CGAL_precondition(!candidates || measure == Quality_measure::min_dihedral_sine);
+  std::vector<Entry> start;
+  Entry entry;
   if(candidates)
     for(const auto& m : *candidates)
     {
       CGAL_assertion(ctx.flippable(labels.region(m.cell)));
       if(!(m.quality < opt.quality_threshold)) continue;
-      Entry e{m.quality, m.ids, m.cell, m.vertices};
-      std::sort(e.ids.begin(), e.ids.end());
-      queue.push(e);
+      start.push_back(Entry{m.quality, m.ids, m.cell, m.vertices});
+      std::sort(start.back().ids.begin(), start.back().ids.end());
     }
   else
-    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) push(c);
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+      if(make_entry(c, entry)) start.push_back(entry);
+  std::priority_queue<Entry> queue(std::less<Entry>(), std::move(start));   // a heap in linear time
 
   // Within the pass, geometry is fixed: an edge removal or a face removal found
   // useless stays so until a flip touches its vertices.
-  std::unordered_map<std::uint64_t, std::size_t> useless_edges;
-  std::unordered_map<std::array<int, 4>, std::size_t, Flip_history::Hash> useless_faces;   // face ids and apex
+  Id_tuple_map<2, std::size_t> useless_edges;
+  Id_tuple_map<4, std::size_t> useless_faces;   // face ids and apex
   std::vector<std::size_t> touched_at;
   std::size_t flips_done = 0;
   auto last_touch = [&](int id) { return id < static_cast<int>(touched_at.size()) ? touched_at[id] : 0; };
@@ -201,11 +197,12 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
   {
     const Entry e = queue.top();
     queue.pop();
+    // The history first: it does not read the cell, which is anywhere in memory.
+    if(history && !history->worth_trying(e.ids)) continue;
     if(!labels.tds().cells().is_used(e.cell) ||
        !(e.cell->has_vertex(e.vertices[0]) && e.cell->has_vertex(e.vertices[1]) && e.cell->has_vertex(e.vertices[2]) &&
          e.cell->has_vertex(e.vertices[3])))
       continue;   // replaced since it was queued
-    if(history && !history->worth_trying(e.ids)) continue;
     const Cell_handle c = e.cell;
 
     best.clear();
@@ -216,16 +213,16 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
       for(int j = i + 1; j < 4; ++j)
       {
         const int a = vertex_id(c->vertex(i)), b = vertex_id(c->vertex(j));
-        const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b));
-        const auto known = useless_edges.find(key);
-        if(known != useless_edges.end() && still_useless(known->second, {c->vertex(i), c->vertex(j)})) continue;
+        const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
+        const std::size_t* known = useless_edges.find(key);
+        if(known && still_useless(*known, {c->vertex(i), c->vertex(j)})) continue;
         // Only the best proposal for this cell counts: what cannot beat the best so
         // far is cut short, and then says nothing about the edge's own worth.
         const double at_least = best.improves() ? best.new_worst : -std::numeric_limits<double>::infinity();
         if(edge_removal(ctx, c, i, j, candidate, at_least) && candidate.improves())
           consider();
         else if(!best.improves() || candidate.old_worst >= at_least)
-          useless_edges[key] = flips_done;
+          useless_edges.assign(key, flips_done);
       }
     for(int i = 0; i < 4; ++i)
     {
@@ -237,14 +234,13 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
         if(k != i) key[m++] = vertex_id(c->vertex(k));
       std::sort(key.begin(), key.begin() + 3);
       key[3] = std::min(vertex_id(apex), vertex_id(c->vertex(i)));
-      const auto known = useless_faces.find(key);
-      if(known != useless_faces.end() &&
-         still_useless(known->second, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3), apex}))
+      const std::size_t* known = useless_faces.find(key);
+      if(known && still_useless(*known, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3), apex}))
         continue;
       if(face_removal(ctx, c, i, candidate) && candidate.improves())
         consider();
       else
-        useless_faces[key] = flips_done;
+        useless_faces.assign(key, flips_done);
     }
     created.clear();
     if(!best.improves() || !replace_cells(labels, best.old_cells, best.new_cells, best.new_facets, &created))
@@ -275,7 +271,7 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
         }
       }
     for(Cell_handle n : created)
-      if(!tr.is_infinite(n)) push(n);
+      if(!tr.is_infinite(n) && make_entry(n, entry)) queue.push(entry);
   }
   stats.seconds = timer.time();
   return stats;
