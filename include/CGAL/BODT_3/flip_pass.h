@@ -183,9 +183,10 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
   std::vector<std::size_t> touched_at;
   std::size_t flips_done = 0;
   auto last_touch = [&](int id) { return id < static_cast<int>(touched_at.size()) ? touched_at[id] : 0; };
-  auto still_useless = [&](std::size_t when, std::initializer_list<Vertex_handle> vs) {
-    for(Vertex_handle x : vs)
-      if(!tr.is_infinite(x) && last_touch(vertex_id(x)) > when) return false;
+  // Whether no flip touched the (finite) vertices with these ids since `when`.
+  auto still_useless = [&](std::size_t when, std::initializer_list<int> ids) {
+    for(int id : ids)
+      if(last_touch(id) > when) return false;
     return true;
   };
 
@@ -204,6 +205,9 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
          e.cell->has_vertex(e.vertices[3])))
       continue;   // replaced since it was queued
     const Cell_handle c = e.cell;
+    // The ids of c's vertices in c's order (e.ids is sorted): looked up once.
+    std::array<int, 4> id;
+    for(int k = 0; k < 4; ++k) id[k] = vertex_id(c->vertex(k));
 
     best.clear();
     auto consider = [&]() {
@@ -212,10 +216,9 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
     for(int i = 0; i < 4; ++i)
       for(int j = i + 1; j < 4; ++j)
       {
-        const int a = vertex_id(c->vertex(i)), b = vertex_id(c->vertex(j));
-        const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
+        const std::array<int, 2> key{std::min(id[i], id[j]), std::max(id[i], id[j])};
         const std::size_t* known = useless_edges.find(key);
-        if(known && still_useless(*known, {c->vertex(i), c->vertex(j)})) continue;
+        if(known && still_useless(*known, {id[i], id[j]})) continue;
         // Only the best proposal for this cell counts: what cannot beat the best so
         // far is cut short, and then says nothing about the edge's own worth.
         const double at_least = best.improves() ? best.new_worst : -std::numeric_limits<double>::infinity();
@@ -231,11 +234,12 @@ Topology_stats flip_pass(Labels& labels, const Flip_options& opt, const Dihedral
       if(tr.is_infinite(apex)) continue;
       std::array<int, 4> key;
       for(int k = 0, m = 0; k < 4; ++k)
-        if(k != i) key[m++] = vertex_id(c->vertex(k));
+        if(k != i) key[m++] = id[k];
       std::sort(key.begin(), key.begin() + 3);
-      key[3] = std::min(vertex_id(apex), vertex_id(c->vertex(i)));
+      const int apex_id = vertex_id(apex);
+      key[3] = std::min(apex_id, id[i]);
       const std::size_t* known = useless_faces.find(key);
-      if(known && still_useless(*known, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3), apex}))
+      if(known && still_useless(*known, {id[0], id[1], id[2], id[3], apex_id}))
         continue;
       if(face_removal(ctx, c, i, candidate) && candidate.improves())
         consider();
