@@ -562,3 +562,74 @@ TEST(Pipeline, SameInputSameOutput)
   EXPECT_EQ(ma.tets, mb.tets);
   EXPECT_EQ(ma.triangles, mb.triangles);
 }
+
+// The largest-angle measure is 1 + the cosine of the largest dihedral angle: it
+// orders tetrahedra by their largest angle, is 0 for a flat one with an angle of
+// 180 degrees, and -1 for a negatively oriented one.
+TEST(Quality_measure, LargestAngleMeasureOrdersByTheLargestAngle)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<std::pair<double, double>> measured;   // (largest angle, measure)
+  while(measured.size() < 1000)
+  {
+    Point p[4];
+    for(auto& x : p) x = Point(u(rng), u(rng), u(rng));
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) std::swap(p[2], p[3]);
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) continue;
+    const double q = BODT::tet_quality(BODT::Quality_measure::largest_dihedral_angle, p[0], p[1], p[2], p[3]);
+    const double largest = BODT::min_max_dihedral_angle(p[0], p[1], p[2], p[3]).second;
+    EXPECT_NEAR(q, 1 + std::cos(largest * 3.14159265358979323846 / 180), 1e-9);
+    EXPECT_EQ(BODT::tet_quality(BODT::Quality_measure::largest_dihedral_angle, p[0], p[1], p[3], p[2]), -1);
+    measured.emplace_back(largest, q);
+  }
+  std::sort(measured.begin(), measured.end());
+  for(std::size_t i = 1; i < measured.size(); ++i)
+  {
+    if(measured[i].first > measured[i - 1].first + 1e-6)
+    {
+      EXPECT_LT(measured[i].second, measured[i - 1].second);
+    }
+  }
+  // A flat tetrahedron, its fourth vertex just above the opposite face: angles near 180 degrees.
+  const double flat = BODT::tet_quality(BODT::Quality_measure::largest_dihedral_angle, Point(0, 0, 0), Point(2, 0, 0),
+                                        Point(0, 2, 0), Point(0.5, 0.5, 1e-9));
+  EXPECT_GE(flat, 0);
+  EXPECT_LT(flat, 1e-6);
+}
+
+// The largest-angle phase (on by default) starts where the main phase ends: it
+// lowers the largest angle without lowering the smallest, keeps every
+// subdomain's volume and the vertex count, and inverts nothing.
+TEST(Pipeline, LargestAnglePhaseLowersTheLargestAngle)
+{
+  using namespace bodt_inputs;
+  for(Shape shape : {Shape::torus, Shape::two_subdomains})
+  {
+    SCOPED_TRACE(name(shape));
+    const Generated_mesh input = make_input(shape, Size::small);
+    C3t3 without = input.c3t3, with = input.c3t3;
+    BODT::Smoothing_options opt;
+    opt.largest_angle_phase = false;
+    BODT::smooth(without, opt);
+    opt.largest_angle_phase = true;
+    struct Phases
+    {
+      std::set<std::size_t>* seen;
+      void after_classification(const BODT::Smoothing_result&) const {}
+      void after_iteration(const BODT::Iteration_stats& s) const { seen->insert(s.phase); }
+    };
+    std::set<std::size_t> seen;
+    BODT::smooth(with, opt, Phases{&seen});
+    EXPECT_EQ(seen, (std::set<std::size_t>{0, 1, 2}));
+    const auto a = BODT::mesh_quality(without), b = BODT::mesh_quality(with);
+    EXPECT_EQ(b.inverted_tets, 0u);
+    EXPECT_TRUE(with.triangulation().tds().is_valid());
+    EXPECT_EQ(b.num_vertices, a.num_vertices);
+    EXPECT_GE(b.min_dihedral_deg, a.min_dihedral_deg);
+    EXPECT_LT(b.max_dihedral_deg, a.max_dihedral_deg - 1.0);
+    ASSERT_EQ(b.volume_per_subdomain.size(), a.volume_per_subdomain.size());
+    for(const auto& kv : a.volume_per_subdomain)
+      EXPECT_NEAR(b.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second);
+  }
+}

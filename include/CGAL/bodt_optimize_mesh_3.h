@@ -131,6 +131,10 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
 ///    `max_vertex_insertions` (default -1: 5% of the input's vertices),
 ///    `max_min_threshold` (default 0.34: stars whose worst dihedral sine is below it
 ///    get max-min steps after the flips; 0: off);
+///  - `largest_angle_phase` (default true): after the iterations, a phase decided
+///    by the largest dihedral angle (flips and max-min steps at the cells with an
+///    angle above `largest_angle_threshold`, default 120 degrees, within the smallest
+///    and largest angles reached), then one decided by the minimum sine again;
 ///  - `smoothing_method`: `BODT_3::Smoothing_method::BODT` (default) or `NODT`;
 ///  - `number_of_threads` (default 0: every core the process may use): the
 ///    smoothing sweeps run in parallel; the result does not depend on it;

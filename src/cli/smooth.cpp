@@ -28,6 +28,7 @@ struct Smooth_options
   std::string input, output, format, report, html, method = "bodt";
   BODT::Smoothing_options smoothing;
   bool no_features = false, no_guard = false, no_flips = false, no_insertion = false, quiet = false;
+  bool no_largest_angle_phase = false;
 };
 
 const char* const smooth_description =
@@ -80,6 +81,7 @@ int run_smooth(Smooth_options o)
   opt.quality_guard = !o.no_guard;
   opt.topology_optimization = !o.no_flips;
   opt.vertex_insertion = !o.no_insertion;
+  opt.largest_angle_phase = !o.no_largest_angle_phase;
   if(o.method == "flips" && o.no_flips)
     throw Usage_error("--method flips with --no-flips would change nothing");
 
@@ -192,6 +194,13 @@ Command add_smooth(CLI::App& command)
                      "max-min steps at the vertices whose worst tetrahedron has a dihedral sine below S "
                      "(default 0.34, about 20 degrees; 0: off)")
       ->check(CLI::Range(0., 1.));
+  command.add_flag("--no-largest-angle-phase", o->no_largest_angle_phase,
+                   "no final phase lowering the largest angles (decided by the largest dihedral angle, then by "
+                   "the minimum sine again)");
+  command.add_option("--largest-angle-threshold", o->smoothing.largest_angle_threshold,
+                     "that phase flips and takes max-min steps at tetrahedra with a dihedral angle above D degrees "
+                     "(default 120)")
+      ->check(CLI::Range(0., 180.));
   command.add_option("--threads", o->smoothing.threads,
                      "threads of the reading, quality reports, smoothing and writing (default 0: every core); the output does not depend on it")
       ->check(CLI::Range(0, 4096));

@@ -47,6 +47,7 @@ struct Ours
   bool flips = true;
   bool insertion = true;
   bool max_min = true;
+  bool largest_angle_phase = true;
   bool preserve_features = true;
   BODT::Smoothing_method method = BODT::Smoothing_method::BODT;
 };
@@ -56,7 +57,7 @@ Ours smoothing_only(BODT::Moving_vertices moving, BODT::Smoothing_method method 
 {
   Ours o;
   o.moving = moving;
-  o.flips = o.insertion = o.max_min = false;
+  o.flips = o.insertion = o.max_min = o.largest_angle_phase = false;
   o.method = method;
   return o;
 }
@@ -90,6 +91,7 @@ Run smooth_ours(Mesh& mesh, std::size_t iterations, const Ours& how)
           options.vertex_insertion = how.insertion;
           options.smoothing_method = how.method;
           if(!how.max_min) options.max_min_threshold = 0;
+          options.largest_angle_phase = how.largest_angle_phase;
           options.threads = 1;   // CPU seconds against CGAL's sequential optimizers
           const auto r = BODT::smooth(m, options, Iteration_counter{&done});
           flips = r.topology;
@@ -115,6 +117,7 @@ Run smooth_ours(Mesh& mesh, std::size_t iterations, const Ours& how)
                                             CGAL::parameters::vertex_insertion = how.insertion,
                                             CGAL::parameters::smoothing_method = how.method,
                                             CGAL::parameters::max_min_threshold = how.max_min ? BODT::Smoothing_options().max_min_threshold : 0.,
+                                            CGAL::parameters::largest_angle_phase = how.largest_angle_phase,
                                             CGAL::parameters::number_of_threads = 1,
                                             CGAL::parameters::progress_visitor = Counting{&done, &flips});
         }
@@ -171,11 +174,11 @@ const std::vector<Method>& methods()
       {original_name, Family::reference, Applies_to::every_mesh, "the input, unchanged",
        [](Mesh&, std::size_t) { return Run{0, "unchanged"}; }},
       {odt_interior_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `moving_vertices = INTERIOR`, no flips, no insertion, no max-min: the original "
+       "`bodt_optimize_mesh_3`, `moving_vertices = INTERIOR`, no flips, no insertion, no max-min, no largest-angle phase: the original "
        "ODT (Algorithm 1), boundary fixed, connectivity kept",
        [](Mesh& m, std::size_t n) { return smooth_ours(m, n, smoothing_only(Moving_vertices::INTERIOR)); }},
       {flips_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `moving_vertices = NONE`, no insertion, no max-min: topology optimization alone "
+       "`bodt_optimize_mesh_3`, `moving_vertices = NONE`, no insertion, no max-min, no largest-angle phase: topology optimization alone "
        "(edge removal, multi-face removal, coplanar boundary flips), no vertex moves",
        [](Mesh& m, std::size_t n) {
          Ours o = smoothing_only(Moving_vertices::NONE);
@@ -183,19 +186,19 @@ const std::vector<Method>& methods()
          return smooth_ours(m, n, o);
        }},
       {nodt_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `smoothing_method = NODT`, no flips, no insertion, no max-min: Natural ODT as "
+       "`bodt_optimize_mesh_3`, `smoothing_method = NODT`, no flips, no insertion, no max-min, no largest-angle phase: Natural ODT as "
        "the paper compares it (boundary vertices at the centroid plus the normal compensation, projected back onto "
        "the input boundary), connectivity kept",
        [](Mesh& m, std::size_t n) {
          return smooth_ours(m, n, smoothing_only(Moving_vertices::ALL, BODT::Smoothing_method::NODT));
        }},
       {bodt_no_flips_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, no flips, no insertion, no max-min: B-ODT smoothing alone (Algorithm 2 on "
+       "`bodt_optimize_mesh_3`, no flips, no insertion, no max-min, no largest-angle phase: B-ODT smoothing alone (Algorithm 2 on "
        "surfaces, Algorithm 3 on feature curves, corners fixed), connectivity kept",
        [](Mesh& m, std::size_t n) { return smooth_ours(m, n, smoothing_only(Moving_vertices::ALL)); }},
       {bodt_flips_name, Family::ours, Applies_to::every_mesh,
-       "`bodt_optimize_mesh_3`, `vertex_insertion = false`: B-ODT sweeps, flips and the max-min fallback, no "
-       "vertex added",
+       "`bodt_optimize_mesh_3`, `vertex_insertion = false`: B-ODT sweeps, flips, the max-min fallback and the "
+       "largest-angle phase, no vertex added",
        [](Mesh& m, std::size_t n) {
          Ours o;
          o.insertion = false;
@@ -212,7 +215,9 @@ const std::vector<Method>& methods()
       {bodt_name, Family::ours, Applies_to::every_mesh,
        "`bodt_optimize_mesh_3` with its defaults: each iteration a B-ODT sweep, a flip pass, the max-min "
        "fallback at the stars still below its threshold, and vertex insertion at spades, caps, slivers and "
-       "wedges (at most 5% vertices added)",
+       "wedges (at most 5% vertices added); then the largest-angle phase (the same steps decided by the largest "
+       "dihedral angle, within the extreme angles reached; max-min steps and flips at angles above 120 degrees) and "
+       "a last phase decided by the minimum sine",
        [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{}); }},
       {after_perturb_exude_name, Family::ours, Applies_to::mesh_3_output,
        "CGAL's `perturb_mesh_3` + `exude_mesh_3` as `make_mesh_3` runs them by default, then "

@@ -43,6 +43,8 @@ BOOST_PARAMETER_NAME((topology_optimization_keyword, tag) topology_optimization_
 BOOST_PARAMETER_NAME((vertex_insertion_keyword, tag) vertex_insertion_)
 BOOST_PARAMETER_NAME((max_vertex_insertions_keyword, tag) max_vertex_insertions_)
 BOOST_PARAMETER_NAME((max_min_threshold_keyword, tag) max_min_threshold_)
+BOOST_PARAMETER_NAME((largest_angle_phase_keyword, tag) largest_angle_phase_)
+BOOST_PARAMETER_NAME((largest_angle_threshold_keyword, tag) largest_angle_threshold_)
 BOOST_PARAMETER_NAME((number_of_threads_keyword, tag) number_of_threads_)
 BOOST_PARAMETER_NAME((feature_edge_ratio_keyword, tag) feature_edge_ratio_)
 BOOST_PARAMETER_NAME((feature_corner_ratio_keyword, tag) feature_corner_ratio_)
@@ -73,6 +75,12 @@ inline void set_parameter(Smoothing_options& o, tag::max_min_threshold_, double 
   CGAL_precondition(v >= 0 && v <= 1);
   o.max_min_threshold = v;
 }
+inline void set_parameter(Smoothing_options& o, tag::largest_angle_phase_, bool v) { o.largest_angle_phase = v; }
+inline void set_parameter(Smoothing_options& o, tag::largest_angle_threshold_, double v)
+{
+  CGAL_precondition(v >= 0 && v <= 180);
+  o.largest_angle_threshold = v;
+}
 inline void set_parameter(Smoothing_options& o, tag::number_of_threads_, long long v)
 {
   CGAL_precondition(v >= 0);
@@ -93,6 +101,7 @@ constexpr bool is_known_tag =
     std::is_same<Tag, tag::quality_guard_>::value || std::is_same<Tag, tag::topology_optimization_>::value ||
     std::is_same<Tag, tag::vertex_insertion_>::value || std::is_same<Tag, tag::max_vertex_insertions_>::value ||
     std::is_same<Tag, tag::max_min_threshold_>::value || std::is_same<Tag, tag::number_of_threads_>::value ||
+    std::is_same<Tag, tag::largest_angle_phase_>::value || std::is_same<Tag, tag::largest_angle_threshold_>::value ||
     std::is_same<Tag, tag::feature_edge_ratio_>::value || std::is_same<Tag, tag::feature_corner_ratio_>::value ||
     std::is_same<Tag, tag::progress_visitor_>::value;
 
@@ -154,6 +163,11 @@ public:
     return with(internal::tag::max_vertex_insertions_(), n);
   }
   Optimization_parameters max_min_threshold(double s) const { return with(internal::tag::max_min_threshold_(), s); }
+  Optimization_parameters largest_angle_phase(bool b) const { return with(internal::tag::largest_angle_phase_(), b); }
+  Optimization_parameters largest_angle_threshold(double degrees) const
+  {
+    return with(internal::tag::largest_angle_threshold_(), degrees);
+  }
   Optimization_parameters number_of_threads(long long n) const { return with(internal::tag::number_of_threads_(), n); }
   Optimization_parameters feature_edge_ratio(double r) const { return with(internal::tag::feature_edge_ratio_(), r); }
   Optimization_parameters feature_corner_ratio(double r) const
@@ -228,6 +242,8 @@ inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::topology_
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::vertex_insertion_> vertex_insertion{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::max_vertex_insertions_> max_vertex_insertions{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::max_min_threshold_> max_min_threshold{};
+inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::largest_angle_phase_> largest_angle_phase{};
+inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::largest_angle_threshold_> largest_angle_threshold{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::number_of_threads_> number_of_threads{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::feature_edge_ratio_> feature_edge_ratio{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::feature_corner_ratio_> feature_corner_ratio{};

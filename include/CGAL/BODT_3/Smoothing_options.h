@@ -94,6 +94,17 @@ struct Smoothing_options
   /// `quality_measure`) take max-min compass steps (Smoothing_sweep::raise_worst);
   /// 0 turns the fallback off.
   double max_min_threshold = 0.34;
+  /// After the iterations above, a phase decided by the largest dihedral angle
+  /// of each tetrahedron (`Quality_measure::largest_dihedral_angle`), within the
+  /// smallest and largest angles the mesh then has: flips and max-min steps at the
+  /// cells with an angle above `largest_angle_threshold`, and the sweeps; then a
+  /// phase decided by `quality_measure` again, without insertion. Each runs at most
+  /// `max_iteration_number` iterations (counted in the result's `iterations`).
+  /// The minimum sine is the same for an angle and its supplement, so it leaves the
+  /// angles between its worst and 180 degrees minus that alone; doc/manual.md has
+  /// what this phase does to them.
+  bool largest_angle_phase = true;
+  double largest_angle_threshold = 120;   // degrees
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
   Insertion_options insertion;
@@ -151,7 +162,8 @@ struct Insertion_stats
 /// What one sweep did, as reported to visitors.
 struct Iteration_stats
 {
-  std::size_t iteration = 0;          // 1-based
+  std::size_t iteration = 0;          // 1-based, counted through the phases
+  std::size_t phase = 0;              // 0: main; 1: largest angle; 2: minimum sine again (largest_angle_phase)
   std::size_t moved = 0;              // vertices that moved
   std::size_t shortened = 0;          // of which by a shortened step
   std::size_t refused = 0;            // vertices with a move that was refused entirely

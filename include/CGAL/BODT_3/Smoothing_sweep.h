@@ -115,6 +115,11 @@ public:
   /// the worst cell of its star, through the guard. Needs the quality guard.
   void raise_worst(double threshold, Iteration_stats& stats)
   {
+    // Each accepted step raises the star's worst cell, but by as little as it
+    // likes: with the largest angle as the measure, some vertices zigzag at the
+    // smallest step for thousands of steps (the small generated sharp_part). At
+    // most this many rounds (a step or a halving) per vertex and call.
+    constexpr int max_min_steps = 200;
     if(!opt_.quality_guard) return;
     std::vector<int> vertices;
     for(std::size_t c = 0; c < mesh_.cells.size(); ++c)
@@ -137,7 +142,8 @@ public:
       shortest = std::sqrt(shortest);
       double worst = guard_.worst_around(v);
       bool moved = false;
-      for(double h = 0.2 * shortest; h > 1e-3 * shortest;)
+      int steps = 0;
+      for(double h = 0.2 * shortest; h > 1e-3 * shortest && steps < max_min_steps; ++steps)
       {
         typename K::Point_3 best;
         double best_worst = worst;
@@ -178,6 +184,9 @@ public:
   /// The vertices moved since the last `forget_moves`.
   const std::vector<int>& moved() const { return moved_; }
   void forget_moves() { moved_.clear(); }
+
+  /// Whether vertex `v` moved so far.
+  bool has_moved(int v) const { return moved_once_[v] != 0; }
 
   /// Distinct vertices moved so far.
   std::size_t moved_vertices() const

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -96,19 +97,28 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
         if(mesh.in_mesh[c]) f(b, c);
     });
   };
-  std::vector<Dihedral_bounds> block_bounds(cell_blocks(), Dihedral_bounds::empty());
-  for_cell_blocks([&](int b, std::size_t c) {
-    const auto& q = mesh.cells[c];
-    block_bounds[b].include(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]);
-  });
-  Dihedral_bounds bounds = Dihedral_bounds::empty();
-  for(const Dihedral_bounds& b : block_bounds) bounds.include(b);
+  // The extreme angles of the mesh now: no phase ends with a smaller smallest or a
+  // larger largest angle than it started with.
+  auto extreme_angles = [&]() {
+    std::vector<Dihedral_bounds> block_bounds(cell_blocks(), Dihedral_bounds::empty());
+    for_cell_blocks([&](int b, std::size_t c) {
+      const auto& q = mesh.cells[c];
+      block_bounds[b].include(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]);
+    });
+    Dihedral_bounds all = Dihedral_bounds::empty();
+    for(const Dihedral_bounds& b : block_bounds) all.include(b);
+    return all;
+  };
+  Dihedral_bounds bounds = extreme_angles();
 
   // Every step that may change a subdomain's volume is paid from one budget for
   // the run (Volume_budget.h); NODT, which does not keep the volume, has none.
   Volume_budget volume_budget =
       opt.smoothing_method == Smoothing_method::NODT ? Volume_budget() : Volume_budget::of(mesh, opt.threads);
-  Smoothing_sweep<typename Triangulation_view<Labels>::Kernel> sweep(mesh, cls, opt, bounds, &volume_budget);
+  // Each phase has its options (its measure) and its sweep.
+  Smoothing_options popt = opt;
+  std::optional<Smoothing_sweep<typename Triangulation_view<Labels>::Kernel>> sweep;
+  sweep.emplace(mesh, cls, popt, bounds, &volume_budget);
   auto vertex_id = [&view](typename Labels::Vertex_handle v) { return view.index(v); };
   std::vector<typename Labels::Vertex_handle> touched;
   std::vector<int> changed;
@@ -177,19 +187,21 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     changed_at.resize(mesh.number_of_vertices(), history.clock);
     new_star_at.resize(mesh.number_of_vertices(), history.clock);
     for(int v : changed) changed_at[v] = new_star_at[v] = history.clock;
-    sweep.refresh(changed);
+    sweep->refresh(changed);
     charge(result.phases.reread);
   };
 
   // With the guard on, the sweep knows every mesh cell's minimum dihedral sine:
   // the passes start from the cells below their thresholds.
-  const bool guard_knows = opt.quality_guard && opt.quality_measure == Quality_measure::min_dihedral_sine;
+  auto guard_knows = [&popt] {
+    return popt.quality_guard && popt.quality_measure == Quality_measure::min_dihedral_sine;
+  };
   // The mesh cells the guard measured below a threshold, as `make(c)` gives them,
   // in cell order.
   auto collect_below = [&](double threshold, auto& out, const auto& make) {
     std::vector<std::decay_t<decltype(out)>> found(static_cast<std::size_t>(cell_blocks()));
     for_cell_blocks([&](int b, std::size_t c) {
-      if(sweep.cell_quality(static_cast<int>(c)) < threshold) found[static_cast<std::size_t>(b)].push_back(make(c));
+      if(sweep->cell_quality(static_cast<int>(c)) < threshold) found[static_cast<std::size_t>(b)].push_back(make(c));
     });
     out.clear();
     for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());
@@ -202,7 +214,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     const auto& q = mesh.cells[c];
     Measured m{view.cells()[c], {}, q, 0.0};
     for(int k = 0; k < 4; ++k) m.vertices[k] = view.vertices()[q[k]];
-    m.quality = tet_quality(opt.quality_measure, mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]],
+    m.quality = tet_quality(popt.quality_measure, mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]],
                             mesh.points[q[3]]);
     return m;
   };
@@ -211,83 +223,136 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   const bool unlimited = opt.max_iteration_number == 0;
   const std::size_t last = unlimited ? unlimited_iteration_cap : opt.max_iteration_number;
   const double convergence = unlimited && opt.convergence == 0 ? unlimited_convergence : opt.convergence;
-  result.code = MAX_ITERATION_NUMBER_REACHED;
+  std::size_t it = 0;
+  bool out_of_time = false;
+  std::vector<char> moved;   // vertices moved in some phase
+  // One phase: at most `last` iterations with the options `popt`, until an
+  // iteration changes nothing or converges. Returns how it ended.
+  auto run_phase = [&](std::size_t phase) {
+    Mesh_optimization_return_code code = MAX_ITERATION_NUMBER_REACHED;
+    for(std::size_t k = 1; k <= last; ++k)
+    {
+      Iteration_stats stats;
+      stats.iteration = ++it;
+      stats.phase = phase;
+      if(popt.moving_vertices != Moving_vertices::NONE)
+      {
+        const double start = timer.time();
+        sweep->forget_moves();
+        sweep->run(stats);
+        view.write_back();
+        ++history.clock;
+        for(int v : sweep->moved()) changed_at[v] = history.clock;
+        stats.sweep_seconds = timer.time() - start;
+        charge(result.phases.sweeps);
+      }
+      if(popt.topology_optimization)
+      {
+        const double start = timer.time();   // the pass's cost includes finding where to start
+        history.pass = it;
+        stamp_regions(history);
+        touched.clear();
+        added.clear();
+        // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
+        const bool known = guard_knows() && !popt.flips.flip_outside;
+        if(known) collect_below(popt.flips.quality_threshold, measured, measure);
+        stats.topology = flip_pass(labels, popt.flips, bounds, vertex_id, touched, &history, popt.quality_measure,
+                                   known ? &measured : nullptr);
+        stats.topology.seconds = timer.time() - start;
+        charge(result.phases.flips);
+        if(stats.topology.total() > 0) reread();
+      }
+      if(popt.moving_vertices != Moving_vertices::NONE && popt.max_min_threshold > 0)
+      {
+        // After the flips, which remove most flat tetrahedra better than moves can.
+        sweep->forget_moves();
+        sweep->raise_worst(popt.max_min_threshold, stats);
+        view.write_back();
+        ++history.clock;
+        for(int v : sweep->moved()) changed_at[v] = history.clock;
+        charge(result.phases.max_min);
+      }
+      if(budget > 0 && popt.vertex_insertion)
+      {
+        const double start = timer.time();
+        touched.clear();
+        added.clear();
+        insertion_history.pass = it;
+        insertion_history.clock = history.clock;
+        stamp_regions(insertion_history);
+        if(guard_knows()) collect_below(popt.insertion.quality_threshold, candidates, cell);
+        stats.insertion = insertion_pass(labels, popt.insertion, bounds, popt.quality_measure, popt.tensor_voting,
+                                         budget, popt.moving_vertices == Moving_vertices::ALL, motion, vertex_id,
+                                         added, touched, &insertion_history, guard_knows() ? &candidates : nullptr,
+                                         &volume_budget);
+        stats.insertion.seconds = timer.time() - start;
+        budget -= stats.insertion.vertices_added;
+        history.clock = insertion_history.clock;
+        charge(result.phases.insertion);
+        if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread();
+      }
+      result.topology += stats.topology;
+      result.insertion += stats.insertion;
+      stats.seconds = timer.time();
+      result.iterations = it;
+      visitor.after_iteration(stats);
+      const bool flipped = stats.topology.total() > 0 || stats.insertion.vertices_added > 0;
+      if(stats.moved == 0 && !flipped) { code = CANT_IMPROVE_ANYMORE; break; }
+      if(convergence > 0 && stats.max_relative_move < convergence && !flipped)
+      {
+        code = CONVERGENCE_REACHED;
+        break;
+      }
+      if(opt.time_limit > 0 && timer.time() >= opt.time_limit)
+      {
+        out_of_time = true;
+        code = TIME_LIMIT_REACHED;
+        break;
+      }
+    }
+    moved.resize(mesh.number_of_vertices(), 0);
+    for(std::size_t v = 0; v < moved.size(); ++v) moved[v] |= sweep->has_moved(static_cast<int>(v));
+    return code;
+  };
+  // A new phase: its options, the extreme angles it starts from, its sweep; the
+  // cells that failed to flip by the last phase's measure may flip by this one's.
+  auto start_phase = [&](const Smoothing_options& next) {
+    sweep.reset();
+    popt = next;
+    bounds = extreme_angles();
+    history.failed.clear();
+    sweep.emplace(mesh, cls, popt, bounds, &volume_budget);
+    charge(result.phases.setup);
+  };
+
   charge(result.phases.setup);
-  for(std::size_t it = 1; it <= last; ++it)
+  result.code = run_phase(0);
+  if(opt.largest_angle_phase && !out_of_time)
   {
-    Iteration_stats stats;
-    stats.iteration = it;
-    if(opt.moving_vertices != Moving_vertices::NONE)
+    // The measure above treats an angle and its supplement alike, so angles
+    // between its worst and the largest one are left alone: lower them with the
+    // largest angle as the measure, then let the minimum sine use what that freed.
+    Smoothing_options lower = opt;
+    lower.quality_measure = Quality_measure::largest_dihedral_angle;
+    lower.vertex_insertion = false;
+    // Max-min steps where an angle is above the threshold; flips also where one is
+    // below its supplement (the flip pass selects by sine), since a flat cell often
+    // goes only with its neighbours.
+    const double radians = opt.largest_angle_threshold * 3.14159265358979323846 / 180;
+    lower.max_min_threshold = 1 + std::cos(radians);
+    lower.flips.quality_threshold = std::sin(radians);
+    start_phase(lower);
+    run_phase(1);
+    if(!out_of_time)
     {
-      const double start = timer.time();
-      sweep.forget_moves();
-      sweep.run(stats);
-      view.write_back();
-      ++history.clock;
-      for(int v : sweep.moved()) changed_at[v] = history.clock;
-      stats.sweep_seconds = timer.time() - start;
-      charge(result.phases.sweeps);
+      Smoothing_options polish = opt;
+      polish.vertex_insertion = false;
+      start_phase(polish);
+      run_phase(2);
     }
-    if(opt.topology_optimization)
-    {
-      const double start = timer.time();   // the pass's cost includes finding where to start
-      history.pass = it;
-      stamp_regions(history);
-      touched.clear();
-      added.clear();
-      // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
-      const bool known = guard_knows && !opt.flips.flip_outside;
-      if(known) collect_below(opt.flips.quality_threshold, measured, measure);
-      stats.topology = flip_pass(labels, opt.flips, bounds, vertex_id, touched, &history, opt.quality_measure,
-                                 known ? &measured : nullptr);
-      stats.topology.seconds = timer.time() - start;
-      charge(result.phases.flips);
-      if(stats.topology.total() > 0) reread();
-    }
-    if(opt.moving_vertices != Moving_vertices::NONE && opt.max_min_threshold > 0)
-    {
-      // After the flips, which remove most flat tetrahedra better than moves can.
-      sweep.forget_moves();
-      sweep.raise_worst(opt.max_min_threshold, stats);
-      view.write_back();
-      ++history.clock;
-      for(int v : sweep.moved()) changed_at[v] = history.clock;
-      charge(result.phases.max_min);
-    }
-    if(budget > 0)
-    {
-      const double start = timer.time();
-      touched.clear();
-      added.clear();
-      insertion_history.pass = it;
-      insertion_history.clock = history.clock;
-      stamp_regions(insertion_history);
-      if(guard_knows) collect_below(opt.insertion.quality_threshold, candidates, cell);
-      stats.insertion = insertion_pass(labels, opt.insertion, bounds, opt.quality_measure, opt.tensor_voting, budget,
-                                       opt.moving_vertices == Moving_vertices::ALL, motion, vertex_id, added,
-                                       touched, &insertion_history, guard_knows ? &candidates : nullptr,
-                                       &volume_budget);
-      stats.insertion.seconds = timer.time() - start;
-      budget -= stats.insertion.vertices_added;
-      history.clock = insertion_history.clock;
-      charge(result.phases.insertion);
-      if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread();
-    }
-    result.topology += stats.topology;
-    result.insertion += stats.insertion;
-    stats.seconds = timer.time();
-    result.iterations = it;
-    visitor.after_iteration(stats);
-    const bool flipped = stats.topology.total() > 0 || stats.insertion.vertices_added > 0;
-    if(stats.moved == 0 && !flipped) { result.code = CANT_IMPROVE_ANYMORE; break; }
-    if(convergence > 0 && stats.max_relative_move < convergence && !flipped)
-    {
-      result.code = CONVERGENCE_REACHED;
-      break;
-    }
-    if(opt.time_limit > 0 && timer.time() >= opt.time_limit) { result.code = TIME_LIMIT_REACHED; break; }
   }
-  result.moved_vertices = sweep.moved_vertices();
+  if(out_of_time) result.code = TIME_LIMIT_REACHED;
+  result.moved_vertices = static_cast<std::size_t>(std::count(moved.begin(), moved.end(), 1));
   result.seconds = timer.time();
   return result;
 }

@@ -109,6 +109,38 @@ double min_dihedral_sine(const Point& q0, const Point& q1, const Point& q2, cons
   return std::min(1.0, D * std::sqrt(s));
 }
 
+/// The cosines of the six dihedral angles of a tetrahedron, -(n_k . n_l) for the
+/// outward unit normals of the two faces at each edge.
+template <class Point>
+std::array<double, 6> dihedral_cosines(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  const Point* p[4] = {&p0, &p1, &p2, &p3};
+  // Outward for a positively oriented tetrahedron: (a, b, c) has p_k on its negative side.
+  static const int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  double n[4][3];
+  for(int k = 0; k < 4; ++k)
+  {
+    const Point& a = *p[face[k][0]];
+    const Point& b = *p[face[k][1]];
+    const Point& c = *p[face[k][2]];
+    const double ux = b.x() - a.x(), uy = b.y() - a.y(), uz = b.z() - a.z();
+    const double vx = c.x() - a.x(), vy = c.y() - a.y(), vz = c.z() - a.z();
+    double x = uy * vz - uz * vy, y = uz * vx - ux * vz, z = ux * vy - uy * vx;
+    const double len = std::sqrt(x * x + y * y + z * z);
+    if(len > 0) { x /= len; y /= len; z /= len; }
+    n[k][0] = x; n[k][1] = y; n[k][2] = z;
+  }
+  static const int faces_at_edge[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
+  std::array<double, 6> out;
+  for(int e = 0; e < 6; ++e)
+  {
+    const double* a = n[faces_at_edge[e][0]];
+    const double* b = n[faces_at_edge[e][1]];
+    out[e] = -(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+  }
+  return out;
+}
+
 /// The measures the pipeline can decide with. The minimum dihedral sine is the
 /// default (doc/manual.md); the others exist so that the choice can be measured
 /// (bench/quality_measures.cpp): the smallest dihedral angle alone (what CGAL's
@@ -117,7 +149,8 @@ enum class Quality_measure
 {
   min_dihedral_sine,
   min_dihedral_angle,
-  radius_ratio
+  radius_ratio,
+  largest_dihedral_angle
 };
 
 /// The quality of a tetrahedron by `measure`: larger is better, -1 for a
@@ -128,6 +161,11 @@ double tet_quality(Quality_measure measure, const Point& p0, const Point& p1, co
   const double q = min_dihedral_sine(p0, p1, p2, p3);
   if(measure == Quality_measure::min_dihedral_sine || q < 0) return q;
   if(measure == Quality_measure::radius_ratio) return radius_ratio(p0, p1, p2, p3);
+  if(measure == Quality_measure::largest_dihedral_angle)
+  {
+    const auto c = dihedral_cosines(p0, p1, p2, p3);
+    return 1 + *std::min_element(c.begin(), c.end());
+  }
   const auto a = dihedral_angles(p0, p1, p2, p3);
   return *std::min_element(a.begin(), a.end());
 }
@@ -152,36 +190,11 @@ public:
     return b;
   }
 
-  /// The cosines of the six dihedral angles of a tetrahedron, -(n_k . n_l) for the
-  /// outward unit normals of the two faces at each edge.
+  /// The cosines of the six dihedral angles of a tetrahedron (`dihedral_cosines`).
   template <class Point>
   static std::array<double, 6> cosines(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
   {
-    const Point* p[4] = {&p0, &p1, &p2, &p3};
-    // Outward for a positively oriented tetrahedron: (a, b, c) has p_k on its negative side.
-    static const int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-    double n[4][3];
-    for(int k = 0; k < 4; ++k)
-    {
-      const Point& a = *p[face[k][0]];
-      const Point& b = *p[face[k][1]];
-      const Point& c = *p[face[k][2]];
-      const double ux = b.x() - a.x(), uy = b.y() - a.y(), uz = b.z() - a.z();
-      const double vx = c.x() - a.x(), vy = c.y() - a.y(), vz = c.z() - a.z();
-      double x = uy * vz - uz * vy, y = uz * vx - ux * vz, z = ux * vy - uy * vx;
-      const double len = std::sqrt(x * x + y * y + z * z);
-      if(len > 0) { x /= len; y /= len; z /= len; }
-      n[k][0] = x; n[k][1] = y; n[k][2] = z;
-    }
-    static const int faces_at_edge[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
-    std::array<double, 6> out;
-    for(int e = 0; e < 6; ++e)
-    {
-      const double* a = n[faces_at_edge[e][0]];
-      const double* b = n[faces_at_edge[e][1]];
-      out[e] = -(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
-    }
-    return out;
+    return dihedral_cosines(p0, p1, p2, p3);
   }
 
   /// Widens the bounds to include the angles of a tetrahedron.
