@@ -99,6 +99,8 @@ BODT::Smoothing_options options_of(const py::dict& given)
     else if(key == "vertex_insertion") o.vertex_insertion = v.cast<bool>();
     else if(key == "max_vertex_insertions") o.max_vertex_insertions = v.cast<long long>();
     else if(key == "max_min_threshold") o.max_min_threshold = v.cast<double>();
+    else if(key == "largest_angle_phase") o.largest_angle_phase = v.cast<bool>();
+    else if(key == "largest_angle_threshold") o.largest_angle_threshold = v.cast<double>();
     else if(key == "threads")
     {
       o.threads = v.cast<int>();

@@ -149,7 +149,7 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   const fs::path report = dir / "r \"1\".json";
   std::string out;
   ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --report " + q(report) +
-                         " --iterations 5 --no-insertion --max-insertions 7 --max-min-threshold 0.2 --quiet",
+                         " --iterations 5 --no-insertion --max-insertions 7 --max-min-threshold 0.2 --largest-angle-threshold 125 --quiet",
                      out, dir),
             0)
       << out;
@@ -163,9 +163,16 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_EQ(j.at("options").at("max_min_threshold"), 0.2);
   EXPECT_EQ(j.at("options").at("method"), "bodt");
   const nlohmann::json& r = j.at("result");
+  EXPECT_EQ(j.at("options").at("largest_angle_phase"), true);
+  EXPECT_EQ(j.at("options").at("largest_angle_threshold"), 125);
   EXPECT_EQ(r.at("return_code"), "MAX_ITERATION_NUMBER_REACHED");
-  ASSERT_EQ(r.at("iterations"), 5);
-  ASSERT_EQ(j.at("per_iteration").size(), 5u);
+  // Five iterations of the main phase, then at most five of each largest-angle phase.
+  ASSERT_EQ(j.at("per_iteration").size(), r.at("iterations").get<std::size_t>());
+  std::size_t per_phase[3] = {0, 0, 0};
+  for(const nlohmann::json& s : j.at("per_iteration")) ++per_phase[s.at("phase").get<std::size_t>()];
+  EXPECT_EQ(per_phase[0], 5u);
+  EXPECT_LE(per_phase[1], 5u);
+  EXPECT_LE(per_phase[2], 5u);
   std::size_t moved = 0;
   for(const nlohmann::json& s : j.at("per_iteration"))
   {

@@ -123,13 +123,15 @@ TEST(Parameters, VisitorIsCalledInBothStyles)
 {
   int classifications = 0, iterations = 0;
   Delaunay a = random_ball();
-  CGAL::bodt_optimize_mesh_3(a, params::max_iteration_number = 3,
+  // The main phase alone: with the largest-angle phases, up to three times as many (test_topology.cpp).
+  CGAL::bodt_optimize_mesh_3(a, params::max_iteration_number = 3, params::largest_angle_phase = false,
                              params::progress_visitor = Counting_visitor{&classifications, &iterations});
   EXPECT_EQ(classifications, 1);
   EXPECT_EQ(iterations, 3);
   Delaunay b = random_ball();
   CGAL::bodt_optimize_mesh_3(b, params::progress_visitor(Counting_visitor{&classifications, &iterations})
-                                    .max_iteration_number(2));
+                                    .max_iteration_number(2)
+                                    .largest_angle_phase(false));
   EXPECT_EQ(classifications, 2);
   EXPECT_EQ(iterations, 5);
 }
@@ -148,7 +150,7 @@ TEST(Parameters, DomainOfOdtSignatureIsAccepted)
   EXPECT_EQ(points_of(a), points_of(b));
   Delaunay c = random_ball();
   int classifications = 0, iterations = 0;
-  CGAL::bodt_optimize_mesh_3(c, domain, params::max_iteration_number(2).progress_visitor(
+  CGAL::bodt_optimize_mesh_3(c, domain, params::max_iteration_number(2).largest_angle_phase(false).progress_visitor(
                                              Counting_visitor{&classifications, &iterations}));
   EXPECT_EQ(iterations, 2);
   // CGAL 6's way of saying "no parameter".
@@ -177,8 +179,8 @@ TEST(Parameters, ZeroIterationsTerminates)
   int classifications = 0, iterations = 0;
   // A convergence no run reaches: the cap ends it.
   const auto code = CGAL::bodt_optimize_mesh_3(
-      unguarded, params::max_iteration_number(0).convergence(1e-300).quality_guard(false).progress_visitor(
-                     Counting_visitor{&classifications, &iterations}));
+      unguarded, params::max_iteration_number(0).convergence(1e-300).quality_guard(false).largest_angle_phase(false)
+                     .progress_visitor(Counting_visitor{&classifications, &iterations}));
   EXPECT_EQ(iterations, 1000);
   EXPECT_EQ(code, CGAL::MAX_ITERATION_NUMBER_REACHED);
   iterations = 0;

@@ -342,16 +342,23 @@ TEST(Visitor, ReportsEveryIteration)
   {
     std::size_t* iterations;
     std::size_t* classified;
+    std::size_t* all;
     void after_classification(const BODT::Smoothing_result& r) const { *classified = r.interior_vertices; }
-    void after_iteration(const BODT::Iteration_stats& s) const { *iterations = s.iteration; }
+    void after_iteration(const BODT::Iteration_stats& s) const
+    {
+      if(s.phase == 0) *iterations = s.iteration;
+      ++*all;
+    }
   };
   Generated_mesh input = make_input(Shape::sphere, Size::small);
-  std::size_t iterations = 0, classified = 0;
+  std::size_t iterations = 0, classified = 0, all = 0;
   const auto code = CGAL::bodt_optimize_mesh_3(input.c3t3, CGAL::parameters::max_iteration_number = 3,
                                                CGAL::parameters::progress_visitor =
-                                                   Counting_visitor{&iterations, &classified});
+                                                   Counting_visitor{&iterations, &classified, &all});
   EXPECT_EQ(code, CGAL::MAX_ITERATION_NUMBER_REACHED);
-  EXPECT_EQ(iterations, 3u);
+  EXPECT_EQ(iterations, 3u);   // the main phase's
+  EXPECT_GT(all, 3u);          // then the largest-angle phases', at most 3 each
+  EXPECT_LE(all, 9u);
   EXPECT_GT(classified, 0u);
 }
 
@@ -367,13 +374,14 @@ TEST(ReturnCodes, ConvergenceAndTimeLimitStopTheSweeps)
   std::size_t its = 0;
   C3t3 a = input.c3t3;
   // Every first-sweep move is far below a billion local sizes: converged after one
-  // sweep without flips, and after the first iteration with no flip with them.
+  // sweep without flips (in each of the three phases), and after the first
+  // iteration with no flip with them.
   EXPECT_EQ(CGAL::bodt_optimize_mesh_3(a, CGAL::parameters::convergence = 1e9,
                                        CGAL::parameters::topology_optimization = false,
                                        CGAL::parameters::vertex_insertion = false,
                                        CGAL::parameters::progress_visitor = Counter{&its}),
             CGAL::CONVERGENCE_REACHED);
-  EXPECT_EQ(its, 1u);
+  EXPECT_EQ(its, 3u);
   struct Flip_counter
   {
     std::size_t* iterations;

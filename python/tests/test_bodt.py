@@ -87,7 +87,8 @@ class Arrays(unittest.TestCase):
 
     def test_options_reach_the_pipeline(self):
         points, tets, labels = jittered_grid()
-        _, report = bodt.smooth(points, tets, labels, max_iteration_number=3, method="odt", quality_guard=False)
+        _, report = bodt.smooth(points, tets, labels, max_iteration_number=3, method="odt", quality_guard=False,
+                                largest_angle_phase=False)
         self.assertLessEqual(report["result"]["iterations"], 3)
         self.assertEqual(report["options"]["method"], "odt")
         self.assertFalse(report["options"]["quality_guard"])

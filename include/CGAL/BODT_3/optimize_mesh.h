@@ -221,7 +221,6 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   auto cell = [&](std::size_t c) { return view.cells()[c]; };
 
   const bool unlimited = opt.max_iteration_number == 0;
-  const std::size_t last = unlimited ? unlimited_iteration_cap : opt.max_iteration_number;
   const double convergence = unlimited && opt.convergence == 0 ? unlimited_convergence : opt.convergence;
   std::size_t it = 0;
   bool out_of_time = false;
@@ -230,6 +229,7 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
   // iteration changes nothing or converges. Returns how it ended.
   auto run_phase = [&](std::size_t phase) {
     Mesh_optimization_return_code code = MAX_ITERATION_NUMBER_REACHED;
+    const std::size_t last = popt.max_iteration_number == 0 ? unlimited_iteration_cap : popt.max_iteration_number;
     for(std::size_t k = 1; k <= last; ++k)
     {
       Iteration_stats stats;
@@ -327,7 +327,9 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
 
   charge(result.phases.setup);
   result.code = run_phase(0);
-  if(opt.largest_angle_phase && !out_of_time)
+  // Not for NODT, the paper's baseline: a new sweep would project onto the boundary
+  // the phase starts from, no longer the input's.
+  if(opt.largest_angle_phase && opt.smoothing_method != Smoothing_method::NODT && !out_of_time)
   {
     // The measure above treats an angle and its supplement alike, so angles
     // between its worst and the largest one are left alone: lower them with the

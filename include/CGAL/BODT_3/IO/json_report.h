@@ -77,6 +77,7 @@ inline void to_json(nlohmann::json& j, const Insertion_stats& s)
 inline void to_json(nlohmann::json& j, const Iteration_stats& s)
 {
   j = nlohmann::json{{"iteration", s.iteration},
+                     {"phase", s.phase},
                      {"moved", s.moved},
                      {"shortened", s.shortened},
                      {"refused", s.refused},
@@ -145,6 +146,8 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"vertex_insertion", o.vertex_insertion},
                      {"max_vertex_insertions", o.max_vertex_insertions},
                      {"max_min_threshold", o.max_min_threshold},
+                     {"largest_angle_phase", o.largest_angle_phase},
+                     {"largest_angle_threshold", o.largest_angle_threshold},
                      {"threads", o.threads},
                      {"flip_quality_threshold", o.flips.quality_threshold},
                      {"insertion_quality_threshold", o.insertion.quality_threshold},
