@@ -399,14 +399,15 @@ std::string progress_text(bool quiet, std::size_t iterations, double time_limit,
 
 TEST(Progress, ShowsTotalAndTimeLeftOnlyOnLongRuns)
 {
-  // 1.5 s a sweep: after sweep 3 of 20, 17 sweeps or 25.5 s are left.
+  // 1.5 s a sweep: after sweep 3 of at most 60 (20 in each of the three phases),
+  // 57 sweeps or 85.5 s are left at most.
   const std::string text = progress_text(false, 20, 0, 1.5, 3);
-  EXPECT_NE(text.find("sweep 3 of 20"), std::string::npos) << text;
-  EXPECT_NE(text.find("about 26 s left"), std::string::npos) << text;
+  EXPECT_NE(text.find("sweep 3 of at most 60"), std::string::npos) << text;
+  EXPECT_NE(text.find("about 86 s left"), std::string::npos) << text;
   // The first sweep ended before 1 s had passed: no line for it.
   EXPECT_EQ(progress_text(false, 20, 0, 0.4, 2), "");
   EXPECT_EQ(progress_text(true, 20, 0, 1.5, 3), "");
   // A time limit bounds the estimate; 0 iterations show the cap.
   EXPECT_NE(progress_text(false, 20, 6.2, 1.5, 3).find("about 2 s left"), std::string::npos);
-  EXPECT_NE(progress_text(false, 0, 0, 1.5, 1).find("until convergence, at most 1000"), std::string::npos);
+  EXPECT_NE(progress_text(false, 0, 0, 1.5, 1).find("until convergence, at most 3000"), std::string::npos);
 }

@@ -31,6 +31,7 @@ public:
 private:
   bool quiet_;
   bool terminal_;
+  std::size_t phases_;       // 1, or 3 with the largest-angle phases
   std::size_t total_;        // sweeps at most
   bool capped_;              // total_ is the cap of a run "until convergence"
   double time_limit_;
