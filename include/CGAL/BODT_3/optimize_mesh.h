@@ -49,15 +49,18 @@ inline Classification_options classification_options(const Smoothing_options& op
 /// The pipeline of the paper's Fig. 1 on the triangulation behind `labels`
 /// (Mesh_labels.h): the vertices are classified once (`classify(view, options)`
 /// gives a `Vertex_classification` by view id), then each iteration runs a
-/// smoothing sweep (unless `moving_vertices` is NONE) and a topology pass (if
-/// `topology_optimization`). The flat view the sweeps use is re-read after a pass
-/// that changed cells. Every decision compares the minimum dihedral sine of the
-/// cells concerned, worst first, within the input's extreme angles, so the mesh
-/// never ends worse than it started. It stops after `max_iteration_number`
-/// iterations (0: `unlimited_iteration_cap`), at the time limit, at convergence
-/// (no vertex moved by more than `convergence` of its local size and no flip; with
-/// no iteration limit and no convergence given, `unlimited_convergence`), or when
-/// an iteration changed nothing.
+/// smoothing sweep (unless `moving_vertices` is NONE), a topology pass (if
+/// `topology_optimization`), max-min steps and an insertion pass. The flat view the
+/// sweeps use is re-read after a pass that changed cells. Every decision compares
+/// the cells concerned, worst first, by the phase's measure, within the extreme
+/// angles the phase started from, so the mesh never ends worse than it started.
+/// A phase stops after `max_iteration_number` iterations (0:
+/// `unlimited_iteration_cap`), at the time limit, at convergence (no vertex moved
+/// by more than `convergence` of its local size and no flip; with no iteration
+/// limit and no convergence given, `unlimited_convergence`), or when an iteration
+/// changed nothing. The main phase decides by `quality_measure`; with
+/// `largest_angle_phase`, a phase by the largest dihedral angle and a last one by
+/// `quality_measure` follow, without insertion.
 template <class Labels, class Classify, class Visitor>
 Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const Smoothing_options& opt,
                                Visitor&& visitor)
