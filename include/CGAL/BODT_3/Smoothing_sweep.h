@@ -188,12 +188,6 @@ public:
   /// Whether vertex `v` moved so far.
   bool has_moved(int v) const { return moved_once_[v] != 0; }
 
-  /// Distinct vertices moved so far.
-  std::size_t moved_vertices() const
-  {
-    return static_cast<std::size_t>(std::count(moved_once_.begin(), moved_once_.end(), 1));
-  }
-
 private:
   // The sweep order and, per vertex, the vertices whose move depends on it: a
   // vertex whose last move was zero or refused gets the same verdict again until

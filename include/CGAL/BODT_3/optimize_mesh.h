@@ -343,9 +343,8 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     // Max-min steps where an angle is above the threshold; flips also where one is
     // below its supplement (the flip pass selects by sine), since a flat cell often
     // goes only with its neighbours.
-    const double radians = opt.largest_angle_threshold * 3.14159265358979323846 / 180;
-    lower.max_min_threshold = 1 + std::cos(radians);
-    lower.flips.quality_threshold = std::sin(radians);
+    lower.max_min_threshold = largest_angle_quality(opt.largest_angle_threshold);
+    lower.flips.quality_threshold = dihedral_sine(opt.largest_angle_threshold);
     start_phase(lower);
     run_phase(1);
     if(!out_of_time)

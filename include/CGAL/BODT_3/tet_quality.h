@@ -158,17 +158,25 @@ enum class Quality_measure
 template <class Point>
 double tet_quality(Quality_measure measure, const Point& p0, const Point& p1, const Point& p2, const Point& p3)
 {
-  const double q = min_dihedral_sine(p0, p1, p2, p3);
-  if(measure == Quality_measure::min_dihedral_sine || q < 0) return q;
-  if(measure == Quality_measure::radius_ratio) return radius_ratio(p0, p1, p2, p3);
   if(measure == Quality_measure::largest_dihedral_angle)
   {
+    // The orientation test of `min_dihedral_sine` (the same determinant), without its sines.
+    if(!(tet_volume(p0, p1, p2, p3) > 0)) return -1;
     const auto c = dihedral_cosines(p0, p1, p2, p3);
     return 1 + *std::min_element(c.begin(), c.end());
   }
+  const double q = min_dihedral_sine(p0, p1, p2, p3);
+  if(measure == Quality_measure::min_dihedral_sine || q < 0) return q;
+  if(measure == Quality_measure::radius_ratio) return radius_ratio(p0, p1, p2, p3);
   const auto a = dihedral_angles(p0, p1, p2, p3);
   return *std::min_element(a.begin(), a.end());
 }
+
+/// The largest-angle measure of a tetrahedron whose largest dihedral angle is
+/// `degrees`, and the minimum sine of one with an angle of `degrees`: thresholds
+/// given as angles, in each measure's units.
+inline double largest_angle_quality(double degrees) { return 1 + std::cos(degrees * 3.14159265358979323846 / 180); }
+inline double dihedral_sine(double degrees) { return std::sin(degrees * 3.14159265358979323846 / 180); }
 
 /// The extreme dihedral angles a mesh may reach, as cosines: every angle t must
 /// have cos t in [cos_largest, cos_smallest]. Set to a mesh's own extremes, they
@@ -190,18 +198,11 @@ public:
     return b;
   }
 
-  /// The cosines of the six dihedral angles of a tetrahedron (`dihedral_cosines`).
-  template <class Point>
-  static std::array<double, 6> cosines(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
-  {
-    return dihedral_cosines(p0, p1, p2, p3);
-  }
-
   /// Widens the bounds to include the angles of a tetrahedron.
   template <class Point>
   void include(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
   {
-    for(double c : cosines(p0, p1, p2, p3))
+    for(double c : dihedral_cosines(p0, p1, p2, p3))
     {
       cos_smallest_ = std::max(cos_smallest_, c);
       cos_largest_ = std::min(cos_largest_, c);
@@ -233,7 +234,7 @@ public:
   bool contains(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double q) const
   {
     if(q >= safe_) return true;
-    for(double c : cosines(p0, p1, p2, p3))
+    for(double c : dihedral_cosines(p0, p1, p2, p3))
       if(c > cos_smallest_ || c < cos_largest_) return false;
     return true;
   }
