@@ -98,7 +98,10 @@ struct Smoothing_options
   /// of each tetrahedron (`Quality_measure::largest_dihedral_angle`), within the
   /// smallest and largest angles the mesh then has: flips and max-min steps at the
   /// cells with an angle above `largest_angle_threshold`, and the sweeps; then a
-  /// phase decided by `quality_measure` again, without insertion (not with NODT). Each runs at most
+  /// phase decided by `quality_measure` again, without insertion, whose max-min
+  /// steps (with the minimum sine as measure) work on every cell below the flip
+  /// threshold `flips.quality_threshold` if that is above `max_min_threshold`
+  /// (not with NODT). Each runs at most
   /// `max_iteration_number` iterations (counted in the result's `iterations`).
   /// The minimum sine is the same for an angle and its supplement, so it leaves the
   /// angles between its worst and 180 degrees minus that alone; doc/manual.md has

@@ -60,7 +60,8 @@ inline Classification_options classification_options(const Smoothing_options& op
 /// limit and no convergence given, `unlimited_convergence`), or when an iteration
 /// changed nothing. The main phase decides by `quality_measure`; with
 /// `largest_angle_phase`, a phase by the largest dihedral angle and a last one by
-/// `quality_measure` follow, without insertion.
+/// `quality_measure` follow, without insertion; the last one takes max-min steps
+/// at every cell below the flip threshold.
 template <class Labels, class Classify, class Visitor>
 Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const Smoothing_options& opt,
                                Visitor&& visitor)
@@ -351,6 +352,10 @@ Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const S
     {
       Smoothing_options polish = opt;
       polish.vertex_insertion = false;
+      // Max-min steps at every cell the flip pass works on (not only the worst ones):
+      // the phase before pressed many cells down to the smallest angle it started from.
+      if(polish.max_min_threshold > 0 && polish.quality_measure == Quality_measure::min_dihedral_sine)
+        polish.max_min_threshold = std::max(polish.max_min_threshold, polish.flips.quality_threshold);
       start_phase(polish);
       run_phase(2);
     }
