@@ -429,4 +429,57 @@ TEST(Random_sphere, IsDeterministicAndSeeded)
   EXPECT_NE(points(a), points(make_random_sphere(642, 8)));
 }
 
+TEST(Paper_random_sphere, HasNoDihedralAngleBelowThePapersInputAndKeepsItsPoints)
+{
+  const Generated_mesh mesh = make_paper_random_sphere();
+  const Tr& tr = mesh.c3t3.triangulation();
+  EXPECT_EQ(tr.number_of_vertices(), 729u);
+  EXPECT_EQ(mesh.c3t3.number_of_cells_in_complex(), tr.number_of_finite_cells());
+  double smallest = 180.;
+  for(Cell_handle c : cells_in_complex(mesh.c3t3))
+  {
+    const std::array<Point, 4> p = bare_points(tr, c);
+    ASSERT_EQ(CGAL::orientation(p[0], p[1], p[2], p[3]), CGAL::POSITIVE);
+    static const int edge[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+    for(const auto& e : edge)
+      smallest = (std::min)(smallest, std::abs(CGAL::approximate_dihedral_angle(p[e[0]], p[e[1]], p[e[2]], p[e[3]])));
+  }
+  EXPECT_GE(smallest, 5.86);
+
+  // The boundary is the hull of the 642 points on the unit sphere, a closed sphere.
+  const std::vector<Triangle> facets = boundary_facets(mesh.c3t3);
+  EXPECT_EQ(facets.size(), 2u * 642u - 4u);
+  const Surface_topology t = topology(facets);
+  EXPECT_TRUE(t.every_edge_has_two_facets);
+  EXPECT_EQ(t.euler_characteristic, 2);
+  for(const Triangle& f : facets)
+    for(Vertex_handle v : f)
+      EXPECT_NEAR(std::sqrt(CGAL::squared_distance(bare_point(tr, v), Point(CGAL::ORIGIN))), 1., 1e-12);
+
+  // Built from a Tet_mesh, not by Mesh_3: each facet of the complex has its
+  // circumcenter as surface center on both sides (CGAL's Lloyd reads them).
+  for(auto f = mesh.c3t3.facets_in_complex_begin(); f != mesh.c3t3.facets_in_complex_end(); ++f)
+  {
+    const Point p[3] = {bare_point(tr, f->first->vertex((f->second + 1) & 3)),
+                        bare_point(tr, f->first->vertex((f->second + 2) & 3)),
+                        bare_point(tr, f->first->vertex((f->second + 3) & 3))};
+    const auto mirror = tr.mirror_facet(*f);
+    for(const Point& center : {f->first->get_facet_surface_center(f->second),
+                               mirror.first->get_facet_surface_center(mirror.second)})
+    {
+      EXPECT_NEAR(CGAL::squared_distance(center, p[0]), CGAL::squared_distance(center, p[1]), 1e-12);
+      EXPECT_NEAR(CGAL::squared_distance(center, p[0]), CGAL::squared_distance(center, p[2]), 1e-12);
+      EXPECT_LT(CGAL::squared_distance(center, K::Plane_3(p[0], p[1], p[2])), 1e-24);
+    }
+  }
+}
+
+TEST(Paper_random_sphere, IsDeterministicAndSeeded)
+{
+  const Mesh_signature a = signature(make_paper_random_sphere(3).c3t3);
+  EXPECT_FALSE(a.cells.empty());
+  EXPECT_TRUE(a == signature(make_paper_random_sphere(3).c3t3));
+  EXPECT_FALSE(a == signature(make_paper_random_sphere(4).c3t3));
+}
+
 } // namespace

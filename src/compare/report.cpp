@@ -464,7 +464,7 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
         })
      << "\n### Table 1c. Those tetrahedra by where they are: no vertex on the boundary / some / all four\n\n"
      << "A tetrahedron whose four vertices lie on the boundary or an interface cannot be opened by moving points "
-        "along the surface; flips remove many, vertex insertion (not yet) is for the rest.\n\n"
+        "along the surface; flips remove many, and vertex insertion can split the rest (a new vertex on the surface edge or face, then smoothed).\n\n"
      << wide_table(c, table, [](const Input_result&, const Measurement& row) {
           return format("%zu / %zu / %zu", row.quality.bad_tets_interior, row.quality.bad_tets_touching_boundary,
                         row.quality.bad_tets_all_vertices_on_boundary);

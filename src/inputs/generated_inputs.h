@@ -74,11 +74,13 @@ Delaunay make_random_sphere(Size size);
 
 /// The paper's Random Sphere as the paper describes it (642 random points on the
 /// unit sphere and inner vertices, Delaunay, then sliver removal): 642 seeded random
-/// points on the unit sphere and 87 in the ball of radius 0.8, Delaunay
-/// triangulated, then CGAL's `perturb_mesh_3` and `exude_mesh_3` on the unit-ball
-/// domain, which bring it near the paper's input quality (ours 8.5 / 164.2 degrees,
-/// the paper's 5.9 / 164.7). The domain is kept, so CGAL's optimizers apply. Same
-/// seed, same mesh. Takes minutes: the perturber is slow on it.
+/// points on the unit sphere and 87 in the ball of radius 0.8, then a seeded sliver
+/// removal of ours (random moves of the worst cell's vertices, surface points kept
+/// on the sphere, each kept if fewer cells are left under the bound) until no
+/// dihedral angle is below the paper's input's 5.86 degrees, and the Delaunay
+/// triangulation of the moved points. CGAL's perturb_mesh_3 did this before, but
+/// took seconds to minutes from run to run. The unit-ball domain is kept, so CGAL's
+/// optimizers apply. Same seed, same mesh.
 Generated_mesh make_paper_random_sphere(unsigned seed = 1);
 
 } // namespace bodt_inputs

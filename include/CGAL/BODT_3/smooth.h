@@ -9,6 +9,7 @@
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/Tet_mesh_constraints.h>
 #include <CGAL/BODT_3/Triangulation_view.h>
+#include <CGAL/BODT_3/facet_surface_centers.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/optimize_mesh.h>
 
@@ -35,7 +36,10 @@ smooth(C3T3& c3t3, const Smoothing_options& options, Visitor&& visitor = Visitor
   auto classify = [&c3t3](const auto& view, const Classification_options& opt) {
     return classify_vertices(view.mesh(), c3t3_feature_hints(c3t3, view), opt);
   };
-  return optimize_mesh(labels, classify, options, visitor);
+  Smoothing_result result = optimize_mesh(labels, classify, options, visitor);
+  // The boundary moved and its facets changed: CGAL's optimizers, run after ours, read these.
+  set_facet_surface_centers(c3t3);
+  return result;
 }
 
 /// The pipeline on a `Triangulation_3`: its finite cells are the mesh, its convex

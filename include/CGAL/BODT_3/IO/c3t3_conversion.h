@@ -7,6 +7,7 @@
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/Tet_mesh_cell_base_3.h>
 #include <CGAL/BODT_3/Thread_workers.h>
+#include <CGAL/BODT_3/facet_surface_centers.h>
 #include <CGAL/BODT_3/tet_face_matching.h>
 #include <CGAL/BODT_3/IO/Mesh_io_error.h>
 #include <CGAL/BODT_3/IO/check_tet_mesh.h>
@@ -468,6 +469,7 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
       set_vertex_index(vh[v], corner);
     }
 
+  set_facet_surface_centers(result);
   c3t3.swap(result);
   if(handles) handles->swap(vh);
 }
