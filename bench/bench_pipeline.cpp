@@ -19,7 +19,7 @@
 #include "compare/compare.h"
 #include "inputs/generated_inputs.h"
 
-#include <CGAL/BODT_3/Bad_tet_shape.h>
+#include <CGAL/BODT_3/internal/Insertion/Bad_tet_shape.h>
 
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/mesh_quality.h>

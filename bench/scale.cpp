@@ -19,7 +19,7 @@
 #include "jittered_grid.h"
 #include "inputs/generated_inputs.h"
 
-#include <CGAL/BODT_3/IO/c3t3_conversion.h>
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 
 #include <nlohmann/json.hpp>

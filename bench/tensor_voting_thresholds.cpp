@@ -12,8 +12,8 @@
 //  - missed corners: corners (dimension 0) classified as movable.
 #include "inputs/generated_inputs.h"
 
-#include <CGAL/BODT_3/Vertex_classification.h>
-#include <CGAL/BODT_3/Triangulation_view.h>
+#include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
+#include <CGAL/BODT_3/internal/Mesh/Flat_view.h>
 
 #include <cstdio>
 #include <cstring>
@@ -36,8 +36,8 @@ int main(int argc, char** argv)
       std::size_t surface = 0, false_features = 0, curve = 0, missed = 0, corners = 0, missed_corners = 0;
       for(auto& input : inputs)
       {
-        BODT::C3t3_labels<C3t3> labels(input.c3t3);
-        BODT::Triangulation_view<BODT::C3t3_labels<C3t3>> view(labels);
+        BODT::C3t3_adapter<C3t3> labels(input.c3t3);
+        BODT::Flat_view<BODT::C3t3_adapter<C3t3>> view(labels);
         const BODT::Feature_hints truth = BODT::c3t3_feature_hints(input.c3t3, view);
         BODT::Classification_options opt;
         opt.tensor_voting.edge_ratio = edge;
@@ -48,13 +48,13 @@ int main(int argc, char** argv)
         auto& mesh = view.mesh();
         for(std::size_t c = 0; c < mesh.cells.size(); ++c)
           if(mesh.in_mesh[c]) mesh.subdomain[c] = 1;
-        const auto cls = BODT::classify_vertices(mesh, BODT::Feature_hints(), opt);
-        for(std::size_t v = 0; v < cls.kind.size(); ++v)
+        const auto classification = BODT::classify_vertices(mesh, BODT::Feature_hints(), opt);
+        for(std::size_t v = 0; v < classification.kind.size(); ++v)
         {
           // Only the outer boundary: vertices with boundary facets.
           if(mesh.boundary_begin[v + 1] == mesh.boundary_begin[v]) continue;
           const int dim = truth.dimension[v];
-          const BODT::Vertex_kind k = cls.kind[v];
+          const BODT::Vertex_kind k = classification.kind[v];
           if(dim == 2)
           {
             ++surface;

@@ -9,10 +9,10 @@
 //   worst_cells [--only NAME] [--seed S] [--no-insertion] [--no-phase] [--max-min T] [--count K]
 #include "inputs/generated_inputs.h"
 
-#include <CGAL/BODT_3/Bad_tet_shape.h>
+#include <CGAL/BODT_3/internal/Insertion/Bad_tet_shape.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
-#include <CGAL/BODT_3/tet_quality.h>
+#include <CGAL/BODT_3/internal/Quality/tet_quality.h>
 
 #include <algorithm>
 #include <cmath>

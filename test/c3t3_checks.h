@@ -6,8 +6,8 @@
 #ifndef BODT_TEST_C3T3_CHECKS_H
 #define BODT_TEST_C3T3_CHECKS_H
 
-#include <CGAL/BODT_3/IO/c3t3_conversion.h>
-#include <CGAL/BODT_3/bare_point.h>
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
+#include <CGAL/BODT_3/internal/Utilities/bare_point.h>
 
 #include <gtest/gtest.h>
 

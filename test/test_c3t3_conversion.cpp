@@ -6,7 +6,8 @@
 #include "inputs/generated_inputs.h"
 #include "test_support.h"
 
-#include <CGAL/BODT_3/IO/c3t3_conversion.h>
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
+#include <CGAL/BODT_3/IO/read_mesh_into_c3t3.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
 

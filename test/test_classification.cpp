@@ -1,10 +1,10 @@
 // Vertex classification: tensor voting (eq. 11) on known geometry, the rules for
 // meshes with feature information, non-manifold points, and the
 // volume-preserving choice of move at interfaces and junctions.
-#include <CGAL/BODT_3/Tensor_voting.h>
+#include <CGAL/BODT_3/internal/Classification/Tensor_voting.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/Vertex_classification.h>
-#include <CGAL/BODT_3/Volume_preserving_move.h>
+#include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
+#include <CGAL/BODT_3/internal/Moves/Volume_preserving_move.h>
 #include <CGAL/BODT_3/smooth.h>
 
 #include <CGAL/Random.h>
@@ -25,9 +25,9 @@ namespace BODT = CGAL::BODT_3;
 
 namespace {
 
-BODT::Smoothing_mesh<K> smoothing_mesh(const BODT::Tet_mesh& m)
+BODT::Flat_mesh<K> smoothing_mesh(const BODT::Tet_mesh& m)
 {
-  BODT::Smoothing_mesh<K> s;
+  BODT::Flat_mesh<K> s;
   s.points = m.points;
   s.cells = m.tets;
   s.in_mesh.assign(m.tets.size(), 1);
@@ -106,8 +106,8 @@ TEST(Classification, BoxCornersEdgesFacesByTensorVoting)
   const int n = 3;
   const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
   const auto s = smoothing_mesh(m);
-  const auto cls = BODT::classify_vertices(s, BODT::Feature_hints(), BODT::Classification_options());
-  EXPECT_TRUE(cls.used_tensor_voting);
+  const auto classification = BODT::classify_vertices(s, BODT::Feature_hints(), BODT::Classification_options());
+  EXPECT_TRUE(classification.used_tensor_voting);
   for(std::size_t v = 0; v < m.points.size(); ++v)
   {
     const int on = count_on_box(m, static_cast<int>(v), n);
@@ -115,7 +115,7 @@ TEST(Classification, BoxCornersEdgesFacesByTensorVoting)
                                        : on == 1 ? BODT::Vertex_kind::surface
                                        : on == 2 ? BODT::Vertex_kind::feature
                                                  : BODT::Vertex_kind::fixed;
-    EXPECT_EQ(cls.kind[v], expected) << "vertex " << v << " " << m.points[v];
+    EXPECT_EQ(classification.kind[v], expected) << "vertex " << v << " " << m.points[v];
   }
 }
 
@@ -127,12 +127,12 @@ TEST(Classification, FeatureHintsWinAndInteriorOnlyFixesTheBoundary)
   // One feature edge chain along the bottom front edge: (0,0,0)-(1,0,0)-(2,0,0).
   BODT::Feature_hints hints;
   hints.feature_edges = {{0, 1}, {1, 2}};
-  const auto cls = BODT::classify_vertices(s, hints, BODT::Classification_options());
-  EXPECT_FALSE(cls.used_tensor_voting);
-  EXPECT_EQ(cls.kind[0], BODT::Vertex_kind::fixed);     // one feature edge: a corner
-  EXPECT_EQ(cls.kind[1], BODT::Vertex_kind::feature);   // two: on the curve
-  EXPECT_EQ(cls.kind[2], BODT::Vertex_kind::fixed);
-  EXPECT_EQ(cls.kind[3], BODT::Vertex_kind::surface);   // a box corner the hints do not mention
+  const auto classification = BODT::classify_vertices(s, hints, BODT::Classification_options());
+  EXPECT_FALSE(classification.used_tensor_voting);
+  EXPECT_EQ(classification.kind[0], BODT::Vertex_kind::fixed);     // one feature edge: a corner
+  EXPECT_EQ(classification.kind[1], BODT::Vertex_kind::feature);   // two: on the curve
+  EXPECT_EQ(classification.kind[2], BODT::Vertex_kind::fixed);
+  EXPECT_EQ(classification.kind[3], BODT::Vertex_kind::surface);   // a box corner the hints do not mention
 
   BODT::Classification_options interior_only;
   interior_only.move_boundary = false;
@@ -147,7 +147,7 @@ TEST(Classification, PinchedVertexIsFixed)
   // Two single cubes of tetrahedra sharing only the vertex (1,1,1).
   BODT::Tet_mesh m = bodt_test::cube_grid(2, [](int i, int j, int k) { return (i == j && j == k) ? 1 : 0; });
   const auto s = [&] {
-    BODT::Smoothing_mesh<K> sm;
+    BODT::Flat_mesh<K> sm;
     sm.points = m.points;
     sm.cells = m.tets;
     for(int l : m.tet_labels) sm.in_mesh.push_back(l != 0);
@@ -155,10 +155,10 @@ TEST(Classification, PinchedVertexIsFixed)
     sm.build_incidences();
     return sm;
   }();
-  const auto cls = BODT::classify_vertices(s, BODT::Feature_hints(), BODT::Classification_options());
+  const auto classification = BODT::classify_vertices(s, BODT::Feature_hints(), BODT::Classification_options());
   const int centre = (1 * 3 + 1) * 3 + 1;
-  EXPECT_EQ(cls.kind[centre], BODT::Vertex_kind::fixed);
-  EXPECT_EQ(cls.non_manifold, 1u);
+  EXPECT_EQ(classification.kind[centre], BODT::Vertex_kind::fixed);
+  EXPECT_EQ(classification.non_manifold, 1u);
 }
 
 TEST(Classification, InterfaceAndJunctionVerticesKeepEverySubdomainVolume)

@@ -5,9 +5,9 @@
 #include "c3t3_checks.h"
 #include "inputs/generated_inputs.h"
 
-#include <CGAL/BODT_3/Bad_tet_shape.h>
-#include <CGAL/BODT_3/IO/c3t3_conversion.h>
-#include <CGAL/BODT_3/Vertex_insertion.h>
+#include <CGAL/BODT_3/internal/Insertion/Bad_tet_shape.h>
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
+#include <CGAL/BODT_3/internal/Insertion/Vertex_insertion.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
 
@@ -24,7 +24,7 @@ using BODT::Tet_mesh;
 using Point = Tet_mesh::Point;
 using File_c3t3 = BODT::Tet_mesh_c3t3;
 using Vertex_handle = File_c3t3::Vertex_handle;
-using Labels = BODT::C3t3_labels<File_c3t3>;
+using Labels = BODT::C3t3_adapter<File_c3t3>;
 
 using bodt_test::bare;
 using bodt_test::expect_valid;

@@ -1,10 +1,10 @@
 // The closed forms of Algorithms 1 to 3 against a numerical minimization of the
 // exact interpolation error (eq. 2/5) over random stars, volume preservation,
 // and the printed coefficients of Algorithm 2.
-#include <CGAL/BODT_3/Bodt_feature_move.h>
-#include <CGAL/BODT_3/Bodt_surface_move.h>
-#include <CGAL/BODT_3/Nodt_move.h>
-#include <CGAL/BODT_3/Odt_move.h>
+#include <CGAL/BODT_3/internal/Moves/Bodt_feature_move.h>
+#include <CGAL/BODT_3/internal/Moves/Bodt_surface_move.h>
+#include <CGAL/BODT_3/internal/Moves/Nodt_move.h>
+#include <CGAL/BODT_3/internal/Moves/Odt_interior_move.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Random.h>
@@ -283,7 +283,7 @@ TEST(OdtMove, RegularStarMovesBackToTheCentre)
   for(int a : {0, 1})
     for(int b : {2, 3})
       for(int c : {4, 5}) add_cell(star, v[a], v[b], v[c]);
-  const Vector X = CGAL::BODT_3::Odt_move()(star);
+  const Vector X = CGAL::BODT_3::Odt_interior_move()(star);
   EXPECT_NEAR(X.x(), -0.1, 1e-14);
   EXPECT_NEAR(X.y(), 0.05, 1e-14);
   EXPECT_NEAR(X.z(), -0.03, 1e-14);
@@ -296,7 +296,7 @@ TEST(OdtMove, EqualsNumericalMinimizerOnRandomInnerStars)
   {
     const Star star = random_inner_star(rng);
     ASSERT_TRUE(star_is_valid(star));
-    const Vector X = CGAL::BODT_3::Odt_move()(star);
+    const Vector X = CGAL::BODT_3::Odt_interior_move()(star);
     const auto num = newton_minimize(
         [&](const std::vector<LD>& x) { return exact_error(star, {x[0], x[1], x[2]}); }, 3, 1e-3L);
     const P3 d{num[0] - X.x(), num[1] - X.y(), num[2] - X.z()};
@@ -389,7 +389,7 @@ TEST(NodtMove, IsTheNewtonStepOfTheExactError)
   for(int n = 0; n < 50; ++n)
   {
     const Star star = random_inner_star(rng);
-    const Vector a = CGAL::BODT_3::Nodt_move()(star), b = CGAL::BODT_3::Odt_move()(star);
+    const Vector a = CGAL::BODT_3::Nodt_move()(star), b = CGAL::BODT_3::Odt_interior_move()(star);
     EXPECT_LE(std::sqrt((a - b).squared_length()), 1e-12 * std::sqrt(b.squared_length())) << "star " << n;
   }
 }
@@ -493,5 +493,5 @@ TEST(BodtSurfaceMove, NoMoveWithoutAUniqueMinimum)
   const Vector X = CGAL::BODT_3::Bodt_surface_move()(star, Vector(0, 0, 1));
   EXPECT_EQ(X, Vector(0, 0, 0));
   EXPECT_EQ(CGAL::BODT_3::Bodt_feature_move()(star, Vector(1, 0, 0)), Vector(0, 0, 0));
-  EXPECT_EQ(CGAL::BODT_3::Odt_move()(star), Vector(0, 0, 0));
+  EXPECT_EQ(CGAL::BODT_3::Odt_interior_move()(star), Vector(0, 0, 0));
 }

@@ -5,12 +5,12 @@
 #include "inputs/generated_inputs.h"
 #include "test_support.h"
 
-#include <CGAL/BODT_3/IO/c3t3_conversion.h>
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/boundary_distance.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
-#include <CGAL/BODT_3/sweep_order.h>
+#include <CGAL/BODT_3/internal/Smoothing/sweep_order.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -250,7 +250,7 @@ TEST_P(Smoothing, SameOutputOnAnyNumberOfThreads)
 // The sweep's colouring: every movable vertex once, and no two vertices of a
 // colour in one cell or in one hull check (what lets them move concurrently).
 template <class K>
-void expect_valid_colouring(const BODT::Smoothing_mesh<K>& mesh, const std::vector<char>& movable)
+void expect_valid_colouring(const BODT::Flat_mesh<K>& mesh, const std::vector<char>& movable)
 {
   const BODT::Sweep_order order = BODT::sweep_order(mesh, movable);
   std::vector<int> colour(mesh.number_of_vertices(), -1);
@@ -277,8 +277,8 @@ void expect_valid_colouring(const BODT::Smoothing_mesh<K>& mesh, const std::vect
 TEST_P(Smoothing, ColouringSeparatesEveryCellAndHullCheck)
 {
   Generated_mesh input = make_input(GetParam(), Size::small);
-  BODT::C3t3_labels<C3t3> labels(input.c3t3);
-  BODT::Triangulation_view<BODT::C3t3_labels<C3t3>> view(labels);
+  BODT::C3t3_adapter<C3t3> labels(input.c3t3);
+  BODT::Flat_view<BODT::C3t3_adapter<C3t3>> view(labels);
   const auto& mesh = view.mesh();
   // Every vertex movable, and a random half: the colouring holds for any choice.
   CGAL::Random random(static_cast<unsigned>(GetParam()) + 7);
@@ -317,8 +317,8 @@ TEST(RandomSphere, SameOutputOnAnyNumberOfThreadsAndAValidColouring)
   const Delaunay input = make_random_sphere();
   {
     Delaunay tr = input;
-    BODT::Triangulation_labels<Delaunay> labels(tr);
-    BODT::Triangulation_view<BODT::Triangulation_labels<Delaunay>> view(labels);
+    BODT::Triangulation_3_adapter<Delaunay> labels(tr);
+    BODT::Flat_view<BODT::Triangulation_3_adapter<Delaunay>> view(labels);
     ASSERT_FALSE(view.mesh().hull_checks.empty());
     expect_valid_colouring(view.mesh(), std::vector<char>(view.mesh().number_of_vertices(), 1));
   }

@@ -6,11 +6,11 @@
 #include "c3t3_checks.h"
 #include "inputs/generated_inputs.h"
 
-#include <CGAL/BODT_3/IO/c3t3_conversion.h>
-#include <CGAL/BODT_3/dihedral_angles.h>
-#include <CGAL/BODT_3/flip_pass.h>
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
+#include <CGAL/BODT_3/internal/Quality/dihedral_angles.h>
+#include <CGAL/BODT_3/internal/Topology/flip_pass.h>
 #include <CGAL/BODT_3/mesh_quality.h>
-#include <CGAL/BODT_3/tet_quality.h>
+#include <CGAL/BODT_3/internal/Quality/tet_quality.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
 
 #include <gtest/gtest.h>
@@ -77,7 +77,7 @@ void build(const Tet_mesh& m, Built& b) { BODT::tet_mesh_to_c3t3(m, b.c3t3, "tes
 // One flip pass over every cell of the mesh (quality threshold 1).
 BODT::Topology_stats flip_all(File_c3t3& c3t3)
 {
-  BODT::C3t3_labels<File_c3t3> labels(c3t3);
+  BODT::C3t3_adapter<File_c3t3> labels(c3t3);
   std::map<Vertex_handle, int> ids;
   for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
     ids.emplace(v, static_cast<int>(ids.size()));
@@ -254,7 +254,7 @@ TEST(Quality_measure, WorstFirstComparison)
 // connectivity counts, moves alone do not.
 TEST(Flips, FailedCellsAreRetriedAfterTheirWaitAndAChange)
 {
-  BODT::Flip_history h;
+  BODT::Attempt_history h;
   h.retries_after_moves = 1;
   h.region_stamp.assign(10, 0);
   h.topology_stamp.assign(10, 0);

@@ -4,7 +4,7 @@
 // keeps every subdomain's volume to 1e-10 in exact arithmetic.
 #include "test_support.h"
 
-#include <CGAL/BODT_3/Volume_budget.h>
+#include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
 #include <CGAL/BODT_3/smooth.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/FPU.h>

@@ -4,7 +4,7 @@
 
 #include "cli/usage_error.h"
 
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 
 #include <cstdio>

@@ -4,6 +4,7 @@
 #define BODT_CLI_PROGRESS_H
 
 #include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/Smoothing_result.h>
 
 #include <cstddef>
 #include <cstdio>

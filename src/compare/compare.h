@@ -11,6 +11,7 @@
 #include "inputs/generated_inputs.h"
 
 #include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/Smoothing_result.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/Mesh_optimization_return_code.h>

@@ -4,8 +4,8 @@
 // The only translation unit that instantiates make_mesh_3 (it is slow to compile).
 #include "inputs/generated_inputs.h"
 
-#include <CGAL/BODT_3/IO/c3t3_conversion.h>
-#include <CGAL/BODT_3/tet_quality.h>
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
+#include <CGAL/BODT_3/internal/Quality/tet_quality.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/make_mesh_3.h>
 #include <CGAL/point_generators_3.h>

@@ -36,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   BODT::Tet_mesh mesh;
   try
   {
-    mesh = BODT::IO::internal_medit::parse("fuzz.mesh", bytes, warnings, version);
+    mesh = BODT::IO::internal::parse_medit("fuzz.mesh", bytes, warnings, version);
   }
   catch(const BODT::Mesh_io_error&)
   {

@@ -9,13 +9,13 @@ namespace IO = CGAL::BODT_3::IO;
 
 namespace {
 
-IO::internal_tetgen::Texts split(std::string_view b)
+IO::internal::Texts split(std::string_view b)
 {
   std::vector<std::string_view> parts;
   for(std::size_t at; parts.size() < 3 && (at = b.find("\n%%\n")) != std::string_view::npos; b = b.substr(at + 4))
     parts.push_back(b.substr(0, at));
   parts.push_back(b);
-  IO::internal_tetgen::Texts t;
+  IO::internal::Texts t;
   t.node_file = "fuzz.node";
   t.ele_file = "fuzz.ele";
   t.node = parts[0];
@@ -31,12 +31,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
   std::ostringstream warnings;
   return bodt_fuzz::run(
-      data, size, [&](std::string_view b) { return IO::internal_tetgen::parse(split(b), warnings); },
+      data, size, [&](std::string_view b) { return IO::internal::parse_tetgen(split(b), warnings); },
       [&](const CGAL::BODT_3::Tet_mesh& m) {
         std::ostringstream node, ele, face, edge;
-        IO::internal_tetgen::write(node, ele, face, edge, m);
+        IO::internal::write(node, ele, face, edge, m);
         const std::string text = node.str() + "\n%%\n" + ele.str() + "\n%%\n" + face.str() + "\n%%\n" + edge.str();
-        const auto r = IO::internal_tetgen::parse(split(text), warnings);
+        const auto r = IO::internal::parse_tetgen(split(text), warnings);
         bodt_fuzz::require_same(m, r, false, true);
       });
 }

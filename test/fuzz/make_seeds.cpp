@@ -122,7 +122,7 @@ void write_all(const fs::path& out, const std::string& name, const Tet_mesh& m)
             text([&](std::ostream& s) { IO::write_vtk(s, m, b, v); }));
   }
   std::ostringstream node, ele, face, edge;
-  IO::internal_tetgen::write(node, ele, face, edge, m);
+  IO::internal::write(node, ele, face, edge, m);
   write(out / "tetgen" / (name + ".tetgen"), node.str() + "\n%%\n" + ele.str() + "\n%%\n" + face.str() + "\n%%\n" + edge.str());
 }
 

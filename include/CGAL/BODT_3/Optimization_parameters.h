@@ -19,6 +19,7 @@
 // calls ambiguous: qualify those three names in such code.
 
 #include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/Smoothing_result.h>
 
 #include <CGAL/boost/parameter.h>
 

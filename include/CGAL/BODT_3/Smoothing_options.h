@@ -3,16 +3,59 @@
 #ifndef CGAL_BODT_3_SMOOTHING_OPTIONS_H
 #define CGAL_BODT_3_SMOOTHING_OPTIONS_H
 
-#include <CGAL/BODT_3/Bad_tet_shape.h>
-#include <CGAL/BODT_3/Tensor_voting.h>
-#include <CGAL/BODT_3/tet_quality.h>
-
-#include <CGAL/Mesh_optimization_return_code.h>
-
 #include <cstddef>
 
 namespace CGAL {
 namespace BODT_3 {
+
+/// The measures the pipeline can decide with. The minimum dihedral sine is the
+/// default (doc/manual.md); the others exist so that the choice can be measured
+/// (bench/quality_measures.cpp): the smallest dihedral angle alone (what CGAL's
+/// perturber and exuder raise), and the radius ratio 3 r / R.
+enum class Quality_measure
+{
+  min_dihedral_sine,
+  min_dihedral_angle,
+  radius_ratio,
+  largest_dihedral_angle
+};
+
+/// Thresholds that turn the paper's "mu_0 >> mu_1 ~ mu_2" into numbers: the
+/// eigenvalues mu_0 >= mu_1 >= mu_2 of M = sum_i S_i n_i n_i^T (eq. 11) are
+/// compared relative to mu_0.
+///  - mu_1 / mu_0 <  `edge_ratio`: a smooth surface point (Algorithm 2);
+///  - mu_1 / mu_0 >= `edge_ratio` and mu_2 / mu_0 < `corner_ratio`: a point on a
+///    feature edge, whose direction is e_2 (Algorithm 3);
+///  - mu_2 / mu_0 >= `corner_ratio`: a corner, which does not move.
+/// Where two flat sides of equal area meet at a dihedral angle theta, the normals
+/// differ by phi = 180 - theta degrees and mu_1 / mu_0 = tan^2(phi / 2): the
+/// default edge ratio 0.05 marks edges whose normals turn by more than about 25
+/// degrees. The defaults come from the experiment of bench/tensor_voting_thresholds
+/// (recorded in doc/manual.md): on the generated inputs they miss no sharp-edge
+/// vertex and no corner, and constrain 1% of the smooth-surface vertices.
+///
+/// With `angle_weighted` (the default) each triangle votes with its angle at the
+/// vertex instead of its area S_i: then the two flat sides of a straight edge
+/// weigh pi each whatever their triangulation, and the ratio depends on the
+/// dihedral angle alone; area weights let one side with slim triangles hide the
+/// edge (see the measurements in doc/manual.md).
+struct Tensor_voting_options
+{
+  double edge_ratio = 0.05;
+  double corner_ratio = 0.05;
+  bool angle_weighted = true;
+};
+
+/// The thresholds of the classification of bad tetrahedra (doc/manual.md).
+struct Bad_tet_options
+{
+  double small_angle = 10;     // degrees: a tetrahedron with a smaller dihedral angle is bad ...
+  double large_angle = 170;    // ... and one with a larger one
+  double short_edge = 0.3;     // an edge shorter than this fraction of the longest is short (below 1/3)
+  /// A point "projects inside" a face when its barycentric coordinates there all
+  /// exceed this, and inside an edge when its parameter is in (margin, 1 - margin).
+  double margin = 0.05;
+};
 
 /// Which vertices move.
 enum class Moving_vertices
@@ -115,112 +158,6 @@ struct Smoothing_options
   /// input's vertices.
   long long max_vertex_insertions = -1;
   Tensor_voting_options tensor_voting;
-};
-
-/// What a flip pass did: accepted flips by kind.
-struct Topology_stats
-{
-  std::size_t flips_2_3 = 0;             // a face removed, an edge created (multi-face removal of one face)
-  std::size_t flips_3_2 = 0;             // an edge of three tetrahedra removed
-  std::size_t edge_removals = 0;         // an edge of four or more tetrahedra removed
-  std::size_t multi_face_removals = 0;   // two or more faces removed, an edge created
-  std::size_t boundary_flips = 0;        // of the above, those that flip exactly coplanar boundary or interface facets
-  double seconds = 0;                    // the pass, with the search for the cells it starts from
-
-  std::size_t total() const { return flips_2_3 + flips_3_2 + edge_removals + multi_face_removals; }
-  Topology_stats& operator+=(const Topology_stats& o)
-  {
-    flips_2_3 += o.flips_2_3;
-    flips_3_2 += o.flips_3_2;
-    edge_removals += o.edge_removals;
-    multi_face_removals += o.multi_face_removals;
-    boundary_flips += o.boundary_flips;
-    seconds += o.seconds;
-    return *this;
-  }
-};
-
-/// What an insertion pass did: kept insertions by the kind of tetrahedron split.
-struct Insertion_stats
-{
-  std::size_t spade_splits = 0;     // an edge split at the projection of the opposite vertex
-  std::size_t cap_splits = 0;       // a face split at the projection of the opposite vertex
-  std::size_t sliver_splits = 0;    // both opposite edges split (two vertices)
-  std::size_t undone = 0;           // insertions tried and undone, since they did not improve
-  std::size_t vertices_added = 0;
-  double seconds = 0;               // the pass, with the search for the cells it starts from
-
-  Insertion_stats& operator+=(const Insertion_stats& o)
-  {
-    spade_splits += o.spade_splits;
-    cap_splits += o.cap_splits;
-    sliver_splits += o.sliver_splits;
-    undone += o.undone;
-    vertices_added += o.vertices_added;
-    seconds += o.seconds;
-    return *this;
-  }
-};
-
-/// What one sweep did, as reported to visitors.
-struct Iteration_stats
-{
-  std::size_t iteration = 0;          // 1-based, counted through the phases
-  std::size_t phase = 0;              // 0: main; 1: largest angle; 2: minimum sine again (largest_angle_phase)
-  std::size_t moved = 0;              // vertices that moved
-  std::size_t shortened = 0;          // of which by a shortened step
-  std::size_t refused = 0;            // vertices with a move that was refused entirely
-  // Why their full-length move was refused:
-  std::size_t refused_inverting_mesh_cell = 0;
-  std::size_t refused_inverting_outside_cell = 0;   // a finite cell outside the mesh (C3T3)
-  std::size_t refused_breaking_hull = 0;
-  std::size_t refused_changing_volume = 0;        // beyond the volume budget (Volume_budget.h)
-  std::size_t refused_worsening_quality = 0;
-  std::size_t max_min_moves = 0;      // vertices moved by the max-min fallback
-  double max_relative_move = 0;       // largest move / local size
-  Topology_stats topology;            // the flip pass after the sweep
-  Insertion_stats insertion;          // the insertion pass before the sweep
-  double sweep_seconds = 0;           // time of the sweep alone
-  double seconds = 0;                 // since the start of the smoothing
-};
-
-/// Where the time of a run went, wall seconds per phase.
-struct Phase_seconds
-{
-  double conversion = 0;   // mesh arrays to triangulation and back (smoothing a `Tet_mesh` only)
-  double setup = 0;        // flat view, classification, sweep set-up
-  double sweeps = 0;
-  double flips = 0;
-  double max_min = 0;      // max-min steps
-  double insertion = 0;
-  double reread = 0;       // the flat view re-read after a connectivity change
-};
-
-/// The outcome of a smoothing run.
-struct Smoothing_result
-{
-  Mesh_optimization_return_code code = MESH_OPTIMIZATION_UNKNOWN_ERROR;
-  std::size_t iterations = 0;
-  std::size_t moved_vertices = 0;     // distinct vertices that moved at least once
-  std::size_t interior_vertices = 0;
-  std::size_t surface_vertices = 0;
-  std::size_t feature_vertices = 0;
-  std::size_t fixed_vertices = 0;
-  std::size_t non_manifold_vertices = 0;
-  std::size_t crack_vertices = 0;     // fixed: a coincident twin, or on a crack face (mesh files only)
-  std::size_t embedded_triangles = 0; // file triangles inside one subdomain, kept (mesh files only)
-  bool used_tensor_voting = false;
-  Topology_stats topology;            // summed over the iterations
-  Insertion_stats insertion;          // summed over the iterations
-  Phase_seconds phases;
-  double seconds = 0;
-};
-
-/// A visitor that does nothing; a user visitor provides the same two functions.
-struct Null_smoothing_visitor
-{
-  void after_classification(const Smoothing_result&) {}
-  void after_iteration(const Iteration_stats&) {}
 };
 
 } // namespace BODT_3

@@ -4,10 +4,10 @@
 #define CGAL_BODT_3_MESH_QUALITY_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/Thread_workers.h>
-#include <CGAL/BODT_3/dihedral_angles.h>
-#include <CGAL/BODT_3/tet_face_matching.h>
-#include <CGAL/BODT_3/tet_quality.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Quality/dihedral_angles.h>
+#include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
+#include <CGAL/BODT_3/internal/Quality/tet_quality.h>
 
 #include <CGAL/Kernel/global_functions.h>
 

@@ -3,15 +3,16 @@
 #ifndef CGAL_BODT_3_SMOOTH_H
 #define CGAL_BODT_3_SMOOTH_H
 
-#include <CGAL/BODT_3/IO/c3t3_conversion.h>
-#include <CGAL/BODT_3/Mesh_labels.h>
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
+#include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/Smoothing_result.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/Tet_mesh_constraints.h>
-#include <CGAL/BODT_3/Triangulation_view.h>
-#include <CGAL/BODT_3/facet_surface_centers.h>
+#include <CGAL/BODT_3/internal/Classification/Tet_mesh_constraints.h>
+#include <CGAL/BODT_3/internal/Mesh/Flat_view.h>
+#include <CGAL/BODT_3/internal/Utilities/facet_surface_centers.h>
 #include <CGAL/BODT_3/mesh_quality.h>
-#include <CGAL/BODT_3/optimize_mesh.h>
+#include <CGAL/BODT_3/internal/Mesh_optimizer.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -32,7 +33,7 @@ template <class C3T3, class Visitor = Null_smoothing_visitor>
 std::enable_if_t<internal::Is_c3t3<C3T3>::value, Smoothing_result>
 smooth(C3T3& c3t3, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
-  C3t3_labels<C3T3> labels(c3t3);
+  C3t3_adapter<C3T3> labels(c3t3);
   auto classify = [&c3t3](const auto& view, const Classification_options& opt) {
     return classify_vertices(view.mesh(), c3t3_feature_hints(c3t3, view), opt);
   };
@@ -49,7 +50,7 @@ template <class Tr, class Visitor = Null_smoothing_visitor>
 std::enable_if_t<!internal::Is_c3t3<Tr>::value && !std::is_same<Tr, Tet_mesh>::value, Smoothing_result>
 smooth(Tr& tr, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
-  Triangulation_labels<Tr> labels(tr);
+  Triangulation_3_adapter<Tr> labels(tr);
   const Feature_hints none;
   return optimize_mesh(labels, Classify_by_hints{none}, options, visitor);
 }
@@ -120,7 +121,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   CGAL::Real_timer timer;
   timer.start();
   // The classification reads the file's own feature information.
-  Smoothing_mesh<K> flat;
+  Flat_mesh<K> flat;
   flat.threads = options.threads;
   flat.points = tm.points;
   flat.cells = tm.tets;
@@ -146,7 +147,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   // Classified before the triangulation is built, so that the flat copy is gone by then.
   const double classification_start = timer.time();
   const Vertex_classification by_file = classify_vertices(flat, hints, classification_options(options));
-  flat = Smoothing_mesh<K>();
+  flat = Flat_mesh<K>();
   const double classification = timer.time() - classification_start;
 
   Tet_mesh_c3t3 c3t3;
@@ -158,25 +159,25 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
   internal::add_constraints_to_complex(tm, constraints, handles, c3t3);
 
-  C3t3_labels<Tet_mesh_c3t3> labels(c3t3, false);
+  C3t3_adapter<Tet_mesh_c3t3> labels(c3t3, false);
   auto classify = [&](const auto& view, const Classification_options&) {
-    Vertex_classification cls;
-    cls.kind.assign(view.vertices().size(), Vertex_kind::fixed);
-    cls.curve_neighbors.assign(view.vertices().size(), {-1, -1});
-    cls.used_tensor_voting = by_file.used_tensor_voting;
-    cls.non_manifold = by_file.non_manifold;
+    Vertex_classification classification;
+    classification.kind.assign(view.vertices().size(), Vertex_kind::fixed);
+    classification.curve_neighbors.assign(view.vertices().size(), {-1, -1});
+    classification.used_tensor_voting = by_file.used_tensor_voting;
+    classification.non_manifold = by_file.non_manifold;
     for(std::size_t i = 0; i < handles.size(); ++i)
     {
       if(handles[i] == Tet_mesh_c3t3::Vertex_handle() || constraints.pinned[i]) continue;
       const int v = view.index(handles[i]);
-      cls.kind[v] = by_file.kind[i];
+      classification.kind[v] = by_file.kind[i];
       for(int k = 0; k < 2; ++k)
       {
         const int n = by_file.curve_neighbors[i][k];
-        cls.curve_neighbors[v][k] = n >= 0 ? view.index(handles[n]) : -1;
+        classification.curve_neighbors[v][k] = n >= 0 ? view.index(handles[n]) : -1;
       }
     }
-    return cls;
+    return classification;
   };
   internal::Constraint_counting_visitor<Visitor> counting{visitor, constraints};
   const double conversion = timer.time();

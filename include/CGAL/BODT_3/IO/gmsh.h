@@ -4,12 +4,12 @@
 #define CGAL_BODT_3_IO_GMSH_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/IO/Byte_reader.h>
-#include <CGAL/BODT_3/IO/Mapped_file.h>
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
-#include <CGAL/BODT_3/IO/Output_buffer.h>
-#include <CGAL/BODT_3/IO/Token_reader.h>
-#include <CGAL/BODT_3/IO/check_tet_mesh.h>
+#include <CGAL/BODT_3/IO/internal/Byte_reader.h>
+#include <CGAL/BODT_3/IO/internal/Mapped_file.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
+#include <CGAL/BODT_3/IO/internal/Output_buffer.h>
+#include <CGAL/BODT_3/IO/internal/Token_reader.h>
+#include <CGAL/BODT_3/internal/Mesh/check_tet_mesh.h>
 #include <CGAL/BODT_3/IO/write_atomically.h>
 
 #include <CGAL/Bbox_3.h>
@@ -31,11 +31,8 @@ namespace CGAL {
 namespace BODT_3 {
 namespace IO {
 
-namespace internal_gmsh {
+namespace internal {
 
-using BODT_3::internal::Byte_reader;
-using BODT_3::internal::Token_reader;
-using BODT_3::internal::printable;
 
 // Gmsh element types kept: 15 point (corner), 1 line (edge), 2 triangle, 4 tetrahedron.
 inline int kept_type_nodes(int type)
@@ -73,7 +70,7 @@ inline bool is_unused_section(std::string_view name)
 
 inline bool looks_like_gmsh(std::string_view head)
 {
-  const std::string_view t = BODT_3::internal::first_token(head, '\0');
+  const std::string_view t = internal::first_token(head, '\0');
   return t.empty() || std::string_view("$MeshFormat").substr(0, t.size()) == t;
 }
 
@@ -236,7 +233,7 @@ private:
       const std::int32_t one = bin_.get<std::int32_t>("the binary byte order mark");
       if(one != 1)
       {
-        if(BODT_3::internal::byte_swapped(one) != 1)
+        if(internal::byte_swapped(one) != 1)
           bin_.error("the binary byte order mark is " + std::to_string(one) + ", not 1");
         bin_.set_swap(true);
       }
@@ -847,7 +844,6 @@ inline std::size_t number_of_elements(const Tet_mesh& mesh, int type)
   return type == 15 ? mesh.corners.size() : element_labels(mesh, type).size();
 }
 
-using BODT_3::internal::Output_buffer;
 
 inline void write_point(Output_buffer& out, const Tet_mesh::Point& p)
 {
@@ -1072,7 +1068,7 @@ inline void write_msh41(std::ostream& stream, const Tet_mesh& mesh, bool binary)
 
 /// Parses the bytes of a `.msh` file named `file`; `version` (22 or 41) and
 /// `binary` receive what the file is.
-inline Tet_mesh parse(const std::string& file, std::string_view bytes, std::ostream& warnings, int& version,
+inline Tet_mesh parse_gmsh(const std::string& file, std::string_view bytes, std::ostream& warnings, int& version,
                       bool& binary)
 {
   Msh_parser parser(file, bytes, warnings);
@@ -1082,7 +1078,7 @@ inline Tet_mesh parse(const std::string& file, std::string_view bytes, std::ostr
   return mesh;
 }
 
-} // namespace internal_gmsh
+} // namespace internal
 
 /// Reads a Gmsh `.msh` file, format version 2.2 or 4.1, ASCII or binary (either
 /// byte order). Keeps nodes (any tags, numbered 0, 1, ... in file order), 4-node
@@ -1101,10 +1097,10 @@ inline Tet_mesh parse(const std::string& file, std::string_view bytes, std::ostr
 inline Tet_mesh read_gmsh(const std::string& file, std::ostream& warnings = std::cerr, int* version = nullptr,
                           bool* binary = nullptr)
 {
-  const BODT_3::internal::Mapped_file data(file, "a Gmsh mesh file", internal_gmsh::looks_like_gmsh);
+  const internal::Mapped_file data(file, "a Gmsh mesh file", internal::looks_like_gmsh);
   int v = 0;
   bool b = false;
-  Tet_mesh mesh = internal_gmsh::parse(file, data.bytes(), warnings, v, b);
+  Tet_mesh mesh = internal::parse_gmsh(file, data.bytes(), warnings, v, b);
   if(version) *version = v;
   if(binary) *binary = b;
   return mesh;
@@ -1118,9 +1114,9 @@ inline Tet_mesh read_gmsh(const std::string& file, std::ostream& warnings = std:
 inline void write_gmsh(std::ostream& out, const Tet_mesh& mesh, int version = 41, bool binary = false)
 {
   if(version == 41)
-    internal_gmsh::write_msh41(out, mesh, binary);
+    internal::write_msh41(out, mesh, binary);
   else if(version == 22)
-    internal_gmsh::write_msh22(out, mesh, binary);
+    internal::write_msh22(out, mesh, binary);
   else
     throw std::invalid_argument("write_gmsh: version must be 41 or 22, not " + std::to_string(version));
 }

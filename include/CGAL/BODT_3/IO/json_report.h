@@ -10,6 +10,7 @@
 
 #include <CGAL/BODT_3/Return_code.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/Smoothing_result.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 
 #include <nlohmann/json.hpp>

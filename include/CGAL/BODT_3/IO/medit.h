@@ -4,11 +4,11 @@
 #define CGAL_BODT_3_IO_MEDIT_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/IO/Mapped_file.h>
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
-#include <CGAL/BODT_3/IO/Output_buffer.h>
-#include <CGAL/BODT_3/IO/Token_reader.h>
-#include <CGAL/BODT_3/IO/check_tet_mesh.h>
+#include <CGAL/BODT_3/IO/internal/Mapped_file.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
+#include <CGAL/BODT_3/IO/internal/Output_buffer.h>
+#include <CGAL/BODT_3/IO/internal/Token_reader.h>
+#include <CGAL/BODT_3/internal/Mesh/check_tet_mesh.h>
 #include <CGAL/BODT_3/IO/write_atomically.h>
 
 #include <algorithm>
@@ -26,9 +26,8 @@ namespace CGAL {
 namespace BODT_3 {
 namespace IO {
 
-namespace internal_medit {
+namespace internal {
 
-using BODT_3::internal::Token_reader;
 
 // Sections whose entries are plain numbers we do not keep: tokens per entry.
 inline const std::map<std::string, std::size_t, std::less<>>& ignored_sections()
@@ -100,7 +99,7 @@ bool read_rows(Token_reader& in, std::size_t n, int threads, std::size_t vertice
 /// Parses the text of an ASCII Medit file named `file`; `version` receives its
 /// MeshVersionFormatted. Sections laid out one entry per line are read on
 /// `threads` threads (0: all cores); the result does not depend on their number.
-inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostream& warnings, int& version,
+inline Tet_mesh parse_medit(const std::string& file, std::string_view text, std::ostream& warnings, int& version,
                       int threads = 1)
 {
   Token_reader in(file, text);
@@ -283,7 +282,7 @@ inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostre
   return mesh;
 }
 
-} // namespace internal_medit
+} // namespace internal
 
 /// Reads a Medit `.mesh` file (ASCII, any MeshVersionFormatted 1 to 4; numbers
 /// are read as doubles whatever the version). Keeps vertices with references,
@@ -296,9 +295,9 @@ inline Tet_mesh parse(const std::string& file, std::string_view text, std::ostre
 inline Tet_mesh read_medit(const std::string& file, std::ostream& warnings = std::cerr, int* version = nullptr,
                            int threads = 1)
 {
-  const internal::Mapped_file data(file, "a Medit mesh file", internal_medit::looks_like_medit);
+  const internal::Mapped_file data(file, "a Medit mesh file", internal::looks_like_medit);
   int v = 0;
-  Tet_mesh mesh = internal_medit::parse(file, data.bytes(), warnings, v, threads);
+  Tet_mesh mesh = internal::parse_medit(file, data.bytes(), warnings, v, threads);
   if(version) *version = v;
   return mesh;
 }

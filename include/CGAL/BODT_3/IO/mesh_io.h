@@ -4,7 +4,7 @@
 #define CGAL_BODT_3_IO_MESH_IO_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
 #include <CGAL/BODT_3/IO/gmsh.h>
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/IO/meshb.h>

@@ -4,11 +4,11 @@
 #define CGAL_BODT_3_IO_MESHB_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/IO/Byte_reader.h>
-#include <CGAL/BODT_3/IO/Mapped_file.h>
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
-#include <CGAL/BODT_3/IO/Output_buffer.h>
-#include <CGAL/BODT_3/IO/check_tet_mesh.h>
+#include <CGAL/BODT_3/IO/internal/Byte_reader.h>
+#include <CGAL/BODT_3/IO/internal/Mapped_file.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
+#include <CGAL/BODT_3/IO/internal/Output_buffer.h>
+#include <CGAL/BODT_3/internal/Mesh/check_tet_mesh.h>
 #include <CGAL/BODT_3/IO/write_atomically.h>
 
 #include <array>
@@ -27,9 +27,8 @@ namespace CGAL {
 namespace BODT_3 {
 namespace IO {
 
-namespace internal_meshb {
+namespace internal {
 
-using BODT_3::internal::Byte_reader;
 
 // Keyword codes of the Gamma Mesh Format (libMeshb's GmfKwdCod) that we read or write.
 enum Keyword : std::int32_t
@@ -82,7 +81,7 @@ public:
     const std::int32_t code = in_.get<std::int32_t>("the byte order mark 1");
     if(code != 1)
     {
-      if(BODT_3::internal::byte_swapped(code) != 1)
+      if(internal::byte_swapped(code) != 1)
         in_.error("not a Medit binary mesh file: it starts with " + std::to_string(code) + ", not 1");
       in_.set_swap(true);
     }
@@ -262,7 +261,7 @@ private:
 
 /// Parses the bytes of a `.meshb` file named `file`; `version` receives its
 /// MeshVersionFormatted.
-inline Tet_mesh parse(const std::string& file, std::string_view bytes, std::ostream& warnings, int& version)
+inline Tet_mesh parse_meshb(const std::string& file, std::string_view bytes, std::ostream& warnings, int& version)
 {
   Meshb_parser parser(file, bytes, warnings);
   Tet_mesh mesh = parser.parse();
@@ -284,7 +283,7 @@ inline std::uint64_t file_size(const Tet_mesh& mesh, Layout layout)
   return s;
 }
 
-} // namespace internal_meshb
+} // namespace internal
 
 /// Reads a Medit binary `.meshb` file, MeshVersionFormatted 1 to 4 as libMeshb
 /// writes them (either byte order). Keeps what `read_medit` keeps; skips other
@@ -292,9 +291,9 @@ inline std::uint64_t file_size(const Tet_mesh& mesh, Layout layout)
 /// wrong"). `version`, when given, receives the file's version.
 inline Tet_mesh read_meshb(const std::string& file, std::ostream& warnings = std::cerr, int* version = nullptr)
 {
-  const BODT_3::internal::Mapped_file data(file, "a Medit binary mesh file", internal_meshb::looks_like_meshb);
+  const internal::Mapped_file data(file, "a Medit binary mesh file", internal::looks_like_meshb);
   int v = 0;
-  Tet_mesh mesh = internal_meshb::parse(file, data.bytes(), warnings, v);
+  Tet_mesh mesh = internal::parse_meshb(file, data.bytes(), warnings, v);
   if(version) *version = v;
   return mesh;
 }
@@ -306,13 +305,13 @@ inline Tet_mesh read_meshb(const std::string& file, std::ostream& warnings = std
 /// written as version 3 instead.
 inline void write_meshb(std::ostream& stream, const Tet_mesh& mesh, int version = 2)
 {
-  using namespace internal_meshb;
+  using namespace internal;
   if(version < 1 || version > 4)
     throw std::invalid_argument("write_meshb: version must be 1 to 4, not " + std::to_string(version));
   Layout layout{version};
   if(layout.position() == 4 && file_size(mesh, layout) > std::numeric_limits<std::int32_t>::max())
     layout.version = 3;
-  BODT_3::internal::Output_buffer out(stream);
+  internal::Output_buffer out(stream);
   auto position = [&](std::uint64_t p) {
     if(layout.position() == 8) out.put_binary(p);
     else out.put_binary(static_cast<std::uint32_t>(p));

@@ -4,11 +4,11 @@
 #define CGAL_BODT_3_IO_TETGEN_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/IO/Mapped_file.h>
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
-#include <CGAL/BODT_3/IO/Output_buffer.h>
-#include <CGAL/BODT_3/IO/Token_reader.h>
-#include <CGAL/BODT_3/IO/check_tet_mesh.h>
+#include <CGAL/BODT_3/IO/internal/Mapped_file.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
+#include <CGAL/BODT_3/IO/internal/Output_buffer.h>
+#include <CGAL/BODT_3/IO/internal/Token_reader.h>
+#include <CGAL/BODT_3/internal/Mesh/check_tet_mesh.h>
 #include <CGAL/BODT_3/IO/write_atomically.h>
 
 #include <cmath>
@@ -24,10 +24,8 @@ namespace CGAL {
 namespace BODT_3 {
 namespace IO {
 
-namespace internal_tetgen {
+namespace internal {
 
-using BODT_3::internal::Token_reader;
-using BODT_3::internal::printable;
 
 /// `path` without a TetGen extension (.node, .ele, .face, .edge).
 inline std::string base_name(const std::string& path)
@@ -43,10 +41,10 @@ inline std::string base_name(const std::string& path)
 
 inline bool looks_like_tetgen(std::string_view head)
 {
-  const std::string_view t = BODT_3::internal::first_token(head, '#');
+  const std::string_view t = internal::first_token(head, '#');
   if(t.empty()) return true;
   long long v;
-  return BODT_3::internal::parse_integer(t, v);
+  return internal::parse_integer(t, v);
 }
 
 // The texts of the files of one TetGen mesh; `face` and `edge` may be empty (absent).
@@ -74,7 +72,7 @@ inline int integral_label(Token_reader& in, const char* what)
   return static_cast<int>(a);
 }
 
-inline Tet_mesh parse(const Texts& t, std::ostream& warnings)
+inline Tet_mesh parse_tetgen(const Texts& t, std::ostream& warnings)
 {
   Tet_mesh mesh;
   long long base = 0;
@@ -184,7 +182,7 @@ inline Tet_mesh parse(const Texts& t, std::ostream& warnings)
   return mesh;
 }
 
-} // namespace internal_tetgen
+} // namespace internal
 
 /// Reads a TetGen mesh: `BASE.node` and `BASE.ele`, with `BASE.face` and
 /// `BASE.edge` when they exist; `path` is any of them or BASE itself. Keeps node
@@ -194,37 +192,37 @@ inline Tet_mesh parse(const Texts& t, std::ostream& warnings)
 /// Throws `Mesh_io_error` naming the file and line.
 inline Tet_mesh read_tetgen(const std::string& path, std::ostream& warnings = std::cerr)
 {
-  using namespace internal_tetgen;
+  using namespace internal;
   const std::string base = base_name(path);
   auto exists = [](const std::string& p) { struct stat st; return ::stat(p.c_str(), &st) == 0; };
   Texts t;
   t.node_file = base + ".node";
   t.ele_file = base + ".ele";
-  const BODT_3::internal::Mapped_file node(t.node_file, "a TetGen .node file", looks_like_tetgen);
-  const BODT_3::internal::Mapped_file ele(t.ele_file, "a TetGen .ele file", looks_like_tetgen);
-  std::unique_ptr<BODT_3::internal::Mapped_file> face, edge;
+  const internal::Mapped_file node(t.node_file, "a TetGen .node file", looks_like_tetgen);
+  const internal::Mapped_file ele(t.ele_file, "a TetGen .ele file", looks_like_tetgen);
+  std::unique_ptr<internal::Mapped_file> face, edge;
   if(exists(base + ".face"))
   {
     t.face_file = base + ".face";
-    face = std::make_unique<BODT_3::internal::Mapped_file>(t.face_file, "a TetGen .face file", looks_like_tetgen);
+    face = std::make_unique<internal::Mapped_file>(t.face_file, "a TetGen .face file", looks_like_tetgen);
     t.face = face->bytes();
   }
   if(exists(base + ".edge"))
   {
     t.edge_file = base + ".edge";
-    edge = std::make_unique<BODT_3::internal::Mapped_file>(t.edge_file, "a TetGen .edge file", looks_like_tetgen);
+    edge = std::make_unique<internal::Mapped_file>(t.edge_file, "a TetGen .edge file", looks_like_tetgen);
     t.edge = edge->bytes();
   }
   t.node = node.bytes();
   t.ele = ele.bytes();
-  return parse(t, warnings);
+  return parse_tetgen(t, warnings);
 }
 
-namespace internal_tetgen {
+namespace internal {
 
 inline void write_node(std::ostream& s, const Tet_mesh& mesh)
 {
-  BODT_3::internal::Output_buffer out(s);
+  internal::Output_buffer out(s);
   out.put_int(mesh.points.size()).put(" 3 0 1\n");
   for(std::size_t i = 0; i < mesh.points.size(); ++i)
   {
@@ -236,7 +234,7 @@ inline void write_node(std::ostream& s, const Tet_mesh& mesh)
 
 inline void write_ele(std::ostream& s, const Tet_mesh& mesh)
 {
-  BODT_3::internal::Output_buffer out(s);
+  internal::Output_buffer out(s);
   out.put_int(mesh.tets.size()).put(" 4 1\n");
   for(std::size_t i = 0; i < mesh.tets.size(); ++i)
   {
@@ -248,7 +246,7 @@ inline void write_ele(std::ostream& s, const Tet_mesh& mesh)
 
 inline void write_face(std::ostream& s, const Tet_mesh& mesh)
 {
-  BODT_3::internal::Output_buffer out(s);
+  internal::Output_buffer out(s);
   out.put_int(mesh.triangles.size()).put(" 1\n");
   for(std::size_t i = 0; i < mesh.triangles.size(); ++i)
   {
@@ -260,7 +258,7 @@ inline void write_face(std::ostream& s, const Tet_mesh& mesh)
 
 inline void write_edge(std::ostream& s, const Tet_mesh& mesh)
 {
-  BODT_3::internal::Output_buffer out(s);
+  internal::Output_buffer out(s);
   out.put_int(mesh.edges.size()).put(" 1\n");
   for(std::size_t i = 0; i < mesh.edges.size(); ++i)
     out.put_int(i + 1).put(' ').put_int(mesh.edges[i][0] + 1).put(' ').put_int(mesh.edges[i][1] + 1).put(' ')
@@ -275,7 +273,7 @@ inline void write(std::ostream& node, std::ostream& ele, std::ostream& face, std
   write_edge(edge, mesh);
 }
 
-} // namespace internal_tetgen
+} // namespace internal
 
 /// Writes `mesh` as TetGen files `BASE.node` (vertex references as boundary
 /// markers), `BASE.ele` (labels as one region attribute), `BASE.face` and
@@ -283,11 +281,11 @@ inline void write(std::ostream& node, std::ostream& ele, std::ostream& face, std
 /// them or BASE. Each file is written atomically.
 inline void write_tetgen(const std::string& path, const Tet_mesh& mesh)
 {
-  const std::string base = internal_tetgen::base_name(path);
-  write_atomically(base + ".node", [&](std::ostream& s) { internal_tetgen::write_node(s, mesh); });
-  write_atomically(base + ".ele", [&](std::ostream& s) { internal_tetgen::write_ele(s, mesh); });
-  write_atomically(base + ".face", [&](std::ostream& s) { internal_tetgen::write_face(s, mesh); });
-  write_atomically(base + ".edge", [&](std::ostream& s) { internal_tetgen::write_edge(s, mesh); });
+  const std::string base = internal::base_name(path);
+  write_atomically(base + ".node", [&](std::ostream& s) { internal::write_node(s, mesh); });
+  write_atomically(base + ".ele", [&](std::ostream& s) { internal::write_ele(s, mesh); });
+  write_atomically(base + ".face", [&](std::ostream& s) { internal::write_face(s, mesh); });
+  write_atomically(base + ".edge", [&](std::ostream& s) { internal::write_edge(s, mesh); });
 }
 
 } // namespace IO

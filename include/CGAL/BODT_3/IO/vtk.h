@@ -4,13 +4,13 @@
 #define CGAL_BODT_3_IO_VTK_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/IO/Byte_reader.h>
-#include <CGAL/BODT_3/IO/Mapped_file.h>
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
-#include <CGAL/BODT_3/IO/Output_buffer.h>
-#include <CGAL/BODT_3/IO/Token_reader.h>
-#include <CGAL/BODT_3/IO/check_tet_mesh.h>
-#include <CGAL/BODT_3/IO/vtk_cells.h>
+#include <CGAL/BODT_3/IO/internal/Byte_reader.h>
+#include <CGAL/BODT_3/IO/internal/Mapped_file.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
+#include <CGAL/BODT_3/IO/internal/Output_buffer.h>
+#include <CGAL/BODT_3/IO/internal/Token_reader.h>
+#include <CGAL/BODT_3/internal/Mesh/check_tet_mesh.h>
+#include <CGAL/BODT_3/IO/internal/vtk_cells.h>
 #include <CGAL/BODT_3/IO/write_atomically.h>
 
 #include <cmath>
@@ -27,9 +27,8 @@ namespace CGAL {
 namespace BODT_3 {
 namespace IO {
 
-namespace internal_vtk {
+namespace internal {
 
-using BODT_3::internal::printable;
 
 // Bytes of a legacy VTK data type; 0 for names it does not have.
 inline std::size_t legacy_type_size(std::string_view t)
@@ -174,8 +173,8 @@ public:
           if(type == "float" || type == "double")
           {
             const std::vector<double> v = read_values<double>(components * tuples, type, "a value");
-            if(components == 1 && attributes == cell_data && internal_vtk::label_array_rank(array) >= 0 &&
-               internal_vtk::label_array_rank(array) < label_rank)
+            if(components == 1 && attributes == cell_data && internal::label_array_rank(array) >= 0 &&
+               internal::label_array_rank(array) < label_rank)
             {
               labels.clear();
               for(double d : v)
@@ -184,19 +183,19 @@ public:
                   in_.error("array '" + printable(array) + "' holds " + std::to_string(d) + ", not an integer label");
                 labels.push_back(static_cast<long long>(d));
               }
-              label_rank = internal_vtk::label_array_rank(array);
+              label_rank = internal::label_array_rank(array);
             }
           }
           else
           {
             std::vector<long long> v = read_values<long long>(components * tuples, type, "a value");
-            if(components == 1 && attributes == cell_data && internal_vtk::label_array_rank(array) >= 0 &&
-               internal_vtk::label_array_rank(array) < label_rank)
+            if(components == 1 && attributes == cell_data && internal::label_array_rank(array) >= 0 &&
+               internal::label_array_rank(array) < label_rank)
             {
               labels = std::move(v);
-              label_rank = internal_vtk::label_array_rank(array);
+              label_rank = internal::label_array_rank(array);
             }
-            else if(components == 1 && attributes == point_data && internal_vtk::is_vertex_ref_array(array))
+            else if(components == 1 && attributes == point_data && internal::is_vertex_ref_array(array))
             {
               if(v.size() != mesh_.points.size())
                 in_.error("point array '" + printable(array) + "' has " + std::to_string(v.size()) + " values for " +
@@ -238,9 +237,9 @@ public:
     if(!have_points) throw Mesh_io_error(in_.file(), 0, "the file has no POINTS section");
     if(!have_cells || !have_types) throw Mesh_io_error(in_.file(), 0, "the file has no CELLS or no CELL_TYPES section");
     std::map<long long, std::size_t> skipped;
-    internal_vtk::add_cells(mesh_, connectivity, offsets, types, labels.empty() ? nullptr : &labels, skipped,
+    internal::add_cells(mesh_, connectivity, offsets, types, labels.empty() ? nullptr : &labels, skipped,
                             [&](const std::string& m) { throw Mesh_io_error(in_.file(), 0, m); });
-    internal_vtk::warn_skipped(warnings_, in_.file(), skipped);
+    internal::warn_skipped(warnings_, in_.file(), skipped);
     if(labels.empty())
       warnings_ << "warning: " << in_.file() << ": no cell data array of labels ('label', 'medit:ref', "
                    "'gmsh:physical', ...); every cell gets label 0\n";
@@ -267,8 +266,8 @@ private:
     const std::string_view number = first.substr(v + 1);
     const std::size_t dot = number.find('.');
     long long major = 0, minor = 0;
-    if(dot == std::string_view::npos || !BODT_3::internal::parse_integer(number.substr(0, dot), major) ||
-       !BODT_3::internal::parse_integer(number.substr(dot + 1), minor) || major < 1 || major > 5 || minor < 0 || minor > 9)
+    if(dot == std::string_view::npos || !internal::parse_integer(number.substr(0, dot), major) ||
+       !internal::parse_integer(number.substr(dot + 1), minor) || major < 1 || major > 5 || minor < 0 || minor > 9)
       in_.error("version '" + printable(number) + "' is not a legacy VTK version such as 4.2 or 5.1");
     version_ = static_cast<int>(10 * major + minor);
     next_line();
@@ -367,8 +366,8 @@ private:
     }
   }
 
-  BODT_3::internal::Token_reader in_;
-  BODT_3::internal::Byte_reader bin_;
+  internal::Token_reader in_;
+  internal::Byte_reader bin_;
   std::ostream& warnings_;
   Tet_mesh mesh_;
   int version_ = 42;
@@ -387,7 +386,7 @@ inline Tet_mesh parse_legacy(const std::string& file, std::string_view bytes, st
   return mesh;
 }
 
-} // namespace internal_vtk
+} // namespace internal
 
 /// Reads a legacy VTK `.vtk` file holding an UNSTRUCTURED_GRID, versions 2.0 to
 /// 5.1 (the "CELLS n size" list and the 5.1 OFFSETS/CONNECTIVITY layout), ASCII or
@@ -397,10 +396,10 @@ inline Tet_mesh parse_legacy(const std::string& file, std::string_view bytes, st
 inline Tet_mesh read_vtk(const std::string& file, std::ostream& warnings = std::cerr, int* version = nullptr,
                          bool* binary = nullptr)
 {
-  const BODT_3::internal::Mapped_file data(file, "a legacy VTK file", internal_vtk::looks_like_legacy);
+  const internal::Mapped_file data(file, "a legacy VTK file", internal::looks_like_legacy);
   int v = 0;
   bool b = false;
-  Tet_mesh mesh = internal_vtk::parse_legacy(file, data.bytes(), warnings, v, b);
+  Tet_mesh mesh = internal::parse_legacy(file, data.bytes(), warnings, v, b);
   if(version) *version = v;
   if(binary) *binary = b;
   return mesh;
@@ -415,10 +414,10 @@ inline void write_vtk(std::ostream& stream, const Tet_mesh& mesh, bool binary = 
 {
   if(version != 42 && version != 51)
     throw std::invalid_argument("write_vtk: version must be 42 or 51, not " + std::to_string(version));
-  using BODT_3::internal::byte_swapped;
-  const internal_vtk::Cells cells{mesh};
+  using internal::byte_swapped;
+  const internal::Cells cells{mesh};
   const std::size_t np = mesh.points.size(), nc = cells.size();
-  BODT_3::internal::Output_buffer out(stream);
+  internal::Output_buffer out(stream);
   std::size_t column = 0;
   auto end_values = [&] { out.put('\n'); column = 0; };
   auto sep = [&] { if(!binary) out.put(++column % 12 == 0 ? '\n' : ' '); };

@@ -4,13 +4,13 @@
 #define CGAL_BODT_3_IO_VTU_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
-#include <CGAL/BODT_3/IO/Byte_reader.h>
-#include <CGAL/BODT_3/IO/Mapped_file.h>
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
-#include <CGAL/BODT_3/IO/Output_buffer.h>
-#include <CGAL/BODT_3/IO/Token_reader.h>
-#include <CGAL/BODT_3/IO/check_tet_mesh.h>
-#include <CGAL/BODT_3/IO/vtk_cells.h>
+#include <CGAL/BODT_3/IO/internal/Byte_reader.h>
+#include <CGAL/BODT_3/IO/internal/Mapped_file.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
+#include <CGAL/BODT_3/IO/internal/Output_buffer.h>
+#include <CGAL/BODT_3/IO/internal/Token_reader.h>
+#include <CGAL/BODT_3/internal/Mesh/check_tet_mesh.h>
+#include <CGAL/BODT_3/IO/internal/vtk_cells.h>
 #include <CGAL/BODT_3/IO/write_atomically.h>
 
 #include <zlib.h>
@@ -30,9 +30,8 @@ namespace CGAL {
 namespace BODT_3 {
 namespace IO {
 
-namespace internal_vtu {
+namespace internal {
 
-using BODT_3::internal::printable;
 
 inline int base64_value(char c)
 {
@@ -52,7 +51,7 @@ inline bool base64_decode(std::string_view in, std::vector<unsigned char>& out)
   int n = 0, pad = 0;
   for(char c : in)
   {
-    if(BODT_3::internal::is_space(c)) continue;
+    if(internal::is_space(c)) continue;
     if(c == '=') { quad[n++] = 0; ++pad; }
     else
     {
@@ -116,10 +115,10 @@ public:
       }
       else if(a.parent == "CellData")
       {
-        const int r = internal_vtk::label_array_rank(a.name);
+        const int r = internal::label_array_rank(a.name);
         if(r >= 0 && r < label_rank && a.components == 1) { labels = &a; label_rank = r; }
       }
-      else if(a.parent == "PointData" && internal_vtk::is_vertex_ref_array(a.name) && a.components == 1)
+      else if(a.parent == "PointData" && internal::is_vertex_ref_array(a.name) && a.components == 1)
         refs = &a;
     }
     if(!points) error(0, "the piece has no <Points> data array");
@@ -154,9 +153,9 @@ public:
     std::vector<long long> lab;
     if(labels) lab = values<long long>(*labels, number_of_cells_);
     std::map<long long, std::size_t> skipped;
-    internal_vtk::add_cells(mesh, conn, off, typ, labels ? &lab : nullptr, skipped,
+    internal::add_cells(mesh, conn, off, typ, labels ? &lab : nullptr, skipped,
                             [&](const std::string& m) { error(connectivity->tag, m); });
-    internal_vtk::warn_skipped(warnings_, file_, skipped);
+    internal::warn_skipped(warnings_, file_, skipped);
     if(!labels)
       warnings_ << "warning: " << file_ << ": no cell data array of labels ('label', 'medit:ref', "
                    "'gmsh:physical', ...); every cell gets label 0\n";
@@ -182,13 +181,13 @@ private:
     std::size_t p = 0;
     while((p = attrs.find(key, p)) != std::string_view::npos)
     {
-      const bool starts = p == 0 || BODT_3::internal::is_space(attrs[p - 1]);
+      const bool starts = p == 0 || internal::is_space(attrs[p - 1]);
       std::size_t q = p + key.size();
-      while(q < attrs.size() && BODT_3::internal::is_space(attrs[q])) ++q;
+      while(q < attrs.size() && internal::is_space(attrs[q])) ++q;
       if(starts && q < attrs.size() && attrs[q] == '=')
       {
         ++q;
-        while(q < attrs.size() && BODT_3::internal::is_space(attrs[q])) ++q;
+        while(q < attrs.size() && internal::is_space(attrs[q])) ++q;
         if(q < attrs.size() && (attrs[q] == '"' || attrs[q] == '\''))
         {
           const std::size_t e = attrs.find(attrs[q], q + 1);
@@ -206,7 +205,7 @@ private:
     const std::string_view v = attribute(attrs, key);
     if(v.empty()) return fallback;
     long long x;
-    if(!BODT_3::internal::parse_integer(v, x) || x < 0)
+    if(!internal::parse_integer(v, x) || x < 0)
       error(pos, "attribute " + std::string(key) + "=\"" + printable(v) + "\" is not a non-negative integer");
     return x;
   }
@@ -248,7 +247,7 @@ private:
       const bool self_closing = text_[e - 1] == '/';
       std::size_t n = p + 1 + closing;
       std::size_t ne = n;
-      while(ne < e && !BODT_3::internal::is_space(text_[ne]) && text_[ne] != '/') ++ne;
+      while(ne < e && !internal::is_space(text_[ne]) && text_[ne] != '/') ++ne;
       const std::string_view name = text_.substr(n, ne - n);
       const std::string_view attrs = text_.substr(ne, e - ne - (self_closing ? 1 : 0));
       if(closing)
@@ -339,7 +338,7 @@ private:
   // The bytes after a binary header (UInt32 or UInt64 sizes), uncompressed.
   std::vector<unsigned char> payload(const Array& a, const unsigned char* p, std::size_t size)
   {
-    BODT_3::internal::Byte_reader in(file_, std::string_view(reinterpret_cast<const char*>(p), size), swap_);
+    internal::Byte_reader in(file_, std::string_view(reinterpret_cast<const char*>(p), size), swap_);
     auto header = [&](const char* what) -> std::uint64_t {
       return header_size_ == 8 ? in.get<std::uint64_t>(what) : in.get<std::uint32_t>(what);
     };
@@ -396,20 +395,20 @@ private:
       std::size_t p = 0;
       while(p < content.size())
       {
-        while(p < content.size() && BODT_3::internal::is_space(content[p])) ++p;
+        while(p < content.size() && internal::is_space(content[p])) ++p;
         if(p >= content.size()) break;
         std::size_t e = p;
-        while(e < content.size() && !BODT_3::internal::is_space(content[e])) ++e;
+        while(e < content.size() && !internal::is_space(content[e])) ++e;
         const std::string_view t = content.substr(p, e - p);
         double d;
         long long i;
         if constexpr(std::is_same_v<T, double>)
         {
-          if(!BODT_3::internal::parse_double(t, d)) error(a.begin + p, what + " holds '" + printable(t) + "', not a number");
+          if(!internal::parse_double(t, d)) error(a.begin + p, what + " holds '" + printable(t) + "', not a number");
           v.push_back(d);
         }
-        else if(BODT_3::internal::parse_integer(t, i)) v.push_back(i);
-        else if(BODT_3::internal::parse_double(t, d) && d == std::floor(d) && std::fabs(d) < 9e18) v.push_back(static_cast<long long>(d));
+        else if(internal::parse_integer(t, i)) v.push_back(i);
+        else if(internal::parse_double(t, d) && d == std::floor(d) && std::fabs(d) < 9e18) v.push_back(static_cast<long long>(d));
         else error(a.begin + p, what + " holds '" + printable(t) + "', not an integer");
         p = e;
       }
@@ -463,7 +462,7 @@ private:
   {
     S s;
     std::memcpy(&s, p, sizeof s);
-    return swap_ ? BODT_3::internal::byte_swapped(s) : s;
+    return swap_ ? internal::byte_swapped(s) : s;
   }
 
   template <class S, class T>
@@ -513,7 +512,7 @@ inline bool looks_like_vtu(std::string_view head)
 
 /// Parses the bytes of a `.vtu` file named `file`; `binary` receives whether its
 /// arrays are binary (inline base64 or appended) rather than ASCII.
-inline Tet_mesh parse(const std::string& file, std::string_view bytes, std::ostream& warnings, bool& binary)
+inline Tet_mesh parse_vtu(const std::string& file, std::string_view bytes, std::ostream& warnings, bool& binary)
 {
   Vtu_parser parser(file, bytes, warnings);
   Tet_mesh mesh = parser.parse();
@@ -521,7 +520,7 @@ inline Tet_mesh parse(const std::string& file, std::string_view bytes, std::ostr
   return mesh;
 }
 
-} // namespace internal_vtu
+} // namespace internal
 
 /// Reads a VTK XML UnstructuredGrid (`.vtu`) file of one piece: ASCII, inline
 /// base64 or raw appended arrays, zlib-compressed or not, either byte order, 32- or
@@ -533,9 +532,9 @@ inline Tet_mesh parse(const std::string& file, std::string_view bytes, std::ostr
 /// whether the arrays were binary.
 inline Tet_mesh read_vtu(const std::string& file, std::ostream& warnings = std::cerr, bool* binary = nullptr)
 {
-  const BODT_3::internal::Mapped_file data(file, "a VTK XML file", internal_vtu::looks_like_vtu);
+  const internal::Mapped_file data(file, "a VTK XML file", internal::looks_like_vtu);
   bool b = false;
-  Tet_mesh mesh = internal_vtu::parse(file, data.bytes(), warnings, b);
+  Tet_mesh mesh = internal::parse_vtu(file, data.bytes(), warnings, b);
   if(binary) *binary = b;
   return mesh;
 }
@@ -550,9 +549,9 @@ inline Tet_mesh read_vtu(const std::string& file, std::ostream& warnings = std::
 /// headers), otherwise ASCII with numbers that read back bit for bit.
 inline void write_vtu(std::ostream& stream, const Tet_mesh& mesh, bool binary = true)
 {
-  const internal_vtk::Cells cells{mesh};
+  const internal::Cells cells{mesh};
   const std::size_t np = mesh.points.size(), nc = cells.size();
-  BODT_3::internal::Output_buffer out(stream);
+  internal::Output_buffer out(stream);
   std::uint64_t offset = 0;
   auto array = [&](const char* type, const char* name, int components, std::size_t count, std::size_t value_size) {
     out.put("        <DataArray type=\"").put(type).put("\" Name=\"").put(name).put('"');

@@ -3,7 +3,7 @@
 #ifndef CGAL_BODT_3_IO_WRITE_ATOMICALLY_H
 #define CGAL_BODT_3_IO_WRITE_ATOMICALLY_H
 
-#include <CGAL/BODT_3/IO/Mesh_io_error.h>
+#include <CGAL/BODT_3/Mesh_io_error.h>
 
 #include <atomic>
 #include <cerrno>

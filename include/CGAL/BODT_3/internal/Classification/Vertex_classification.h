@@ -1,0 +1,260 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_INTERNAL_CLASSIFICATION_VERTEX_CLASSIFICATION_H
+#define CGAL_BODT_3_INTERNAL_CLASSIFICATION_VERTEX_CLASSIFICATION_H
+
+#include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
+#include <CGAL/BODT_3/internal/Classification/Tensor_voting.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/id_keys.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// How a vertex may move.
+enum class Vertex_kind : unsigned char
+{
+  fixed,      // corners, non-manifold points, vertices of no mesh cell, or not allowed to move
+  interior,   // inside one subdomain: ODT (Algorithm 1)
+  surface,    // on the boundary or on an interface: basic B-ODT (Algorithm 2)
+  feature     // on a feature curve: advanced B-ODT (Algorithm 3)
+};
+
+/// What the input knows about its features. Every member may stay empty.
+struct Feature_hints
+{
+  /// Per vertex, Mesh_3's dimension (3 interior, 2 surface, 1 curve, 0 corner),
+  /// or -1 where unknown.
+  std::vector<signed char> dimension;
+  /// Feature edges (vertex pairs): Mesh_3 curve edges, or a file's `Edges`.
+  std::vector<std::array<int, 2>> feature_edges;
+  /// Vertices that must not move: Mesh_3 corners, a file's `Corners` and `RequiredVertices`.
+  std::vector<int> corners;
+  /// Surface patch of boundary and interface facets (sorted vertex triple -> label).
+  std::vector<std::pair<std::array<int, 3>, int>> facet_patches;
+};
+
+struct Classification_options
+{
+  bool move_boundary = true;        // false: only interior vertices move (the ODT baseline)
+  bool preserve_features = true;    // false: every boundary vertex uses Algorithm 2
+  Tensor_voting_options tensor_voting;
+};
+
+/// The result: a kind per vertex, and for feature vertices whose curve is known,
+/// its two neighbours along the curve (-1 when the direction comes from tensor voting).
+struct Vertex_classification
+{
+  std::vector<Vertex_kind> kind;
+  std::vector<std::array<int, 2>> curve_neighbors;
+  bool used_tensor_voting = false;
+  std::size_t non_manifold = 0;
+
+  std::size_t count(Vertex_kind k) const { return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), k)); }
+};
+
+namespace internal {
+
+// Whether oriented facets (x0, a, b) around x0 form exactly one closed cycle.
+inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
+{
+  if(facets.empty()) return true;
+  std::unordered_map<int, int> next;
+  for(const auto& f : facets)
+    if(!next.emplace(f[0], f[1]).second) return false;
+  // Following the cycle from one facet must visit every facet before coming back.
+  const int start = facets.front()[0];
+  int v = start;
+  for(std::size_t steps = 1; steps <= facets.size(); ++steps)
+  {
+    auto it = next.find(v);
+    if(it == next.end()) return false;
+    v = it->second;
+    if(v == start) return steps == facets.size();
+  }
+  return false;
+}
+
+} // namespace internal
+
+/// Classifies every vertex of `mesh` (see `Vertex_kind`). The rules, in order:
+/// 1. A vertex of no mesh cell is fixed; so is every non-interior vertex when only
+///    interior vertices move.
+/// 2. For each subdomain around the vertex, the boundary of that subdomain's part
+///    of the star must be one closed cycle of triangles; otherwise (a non-manifold
+///    point) the vertex is fixed.
+/// 3. Inside one subdomain, with no boundary facet: interior, unless the hints say
+///    it lies on a feature.
+/// 4. With feature preservation on, feature edges are the hints' edges and the
+///    edges where facets of two or more surface patches meet (facets the hints do
+///    not label get the pair of subdomains they separate, so junctions of subdomains
+///    are features). A vertex on exactly two feature edges lies on a feature curve;
+///    on one, or three and more, or two that turn by more than 60 degrees, it is a
+///    corner. When the input has no feature
+///    information of its own (Mesh_3 dimensions, feature edges, corners, two or more
+///    patch labels), the other boundary vertices are classified by tensor voting (eq. 11).
+/// 5. Every other vertex is a surface vertex.
+template <class K>
+Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_hints& hints,
+                                        const Classification_options& opt)
+{
+  const int nv = static_cast<int>(mesh.number_of_vertices());
+  Vertex_classification out;
+  out.kind.assign(nv, Vertex_kind::fixed);
+  out.curve_neighbors.assign(nv, {-1, -1});
+
+  // Patches of boundary and interface facets. A facet the hints do not label gets a
+  // label from the pair of subdomains it separates, so that interfaces count as patches.
+  std::unordered_map<std::array<int, 3>, int, internal::Id_hash> patch;
+  for(const auto& fp : hints.facet_patches) patch.emplace(internal::sorted(fp.first), fp.second);
+  std::set<int> patch_labels;   // labels the hints gave
+  std::unordered_map<std::pair<int, int>, std::set<int>, internal::Id_hash> edge_patches;
+  for(int c = 0; c < static_cast<int>(mesh.cells.size()); ++c)
+  {
+    if(!mesh.in_mesh[c]) continue;
+    for(int i = 0; i < 4; ++i)
+    {
+      const int n = mesh.neighbor[4 * c + i];
+      const bool outside = n < 0 || !mesh.in_mesh[n];
+      if(!outside && mesh.subdomain[n] == mesh.subdomain[c]) continue;
+      const auto& o = internal::facet_opposite[i];
+      const std::array<int, 3> f = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
+      const auto it = patch.find(internal::sorted(f));
+      int label;
+      if(it != patch.end())
+      {
+        label = it->second;
+        patch_labels.insert(label);
+      }
+      else
+      {
+        const int s0 = mesh.subdomain[c], s1 = outside ? 0 : mesh.subdomain[n];
+        label = -1 - (std::min(s0, s1) * 4099 + std::max(s0, s1));   // disjoint from file labels >= 0
+      }
+      for(int k = 0; k < 3; ++k) edge_patches[internal::edge_key(f[k], f[(k + 1) % 3])].insert(label);
+    }
+  }
+
+  const bool hints_dims = std::any_of(hints.dimension.begin(), hints.dimension.end(),
+                                      [](signed char d) { return d >= 0; });
+  const bool has_feature_info = hints_dims || !hints.feature_edges.empty() || !hints.corners.empty() ||
+                                patch_labels.size() >= 2;
+  out.used_tensor_voting = opt.preserve_features && opt.move_boundary && !has_feature_info;
+
+  // Feature edges and the feature degree of each vertex. Junctions of subdomains
+  // count even when tensor voting finds the other features.
+  std::unordered_set<std::pair<int, int>, internal::Id_hash> feature_edges;
+  if(opt.preserve_features)
+  {
+    for(const auto& e : hints.feature_edges)
+      if(e[0] != e[1]) feature_edges.insert(internal::edge_key(e[0], e[1]));
+    for(const auto& ep : edge_patches)
+      if(ep.second.size() >= 2) feature_edges.insert(ep.first);
+  }
+  std::vector<std::vector<int>> feature_nbrs(nv);
+  for(const auto& e : feature_edges)
+  {
+    feature_nbrs[e.first].push_back(e.second);
+    feature_nbrs[e.second].push_back(e.first);
+  }
+  std::vector<char> is_corner(nv, 0);
+  if(opt.preserve_features)
+    for(int v : hints.corners)
+      if(v >= 0 && v < nv) is_corner[v] = 1;
+
+  // Vertices are independent: classified in parallel (`mesh.threads`).
+  struct Worker
+  {
+    Vertex_star<K> star;
+    std::size_t non_manifold = 0;
+  };
+  Thread_workers<Worker> workers(mesh.threads);
+  workers.for_each(0, nv, [&](Worker& w, int v) {
+    Vertex_star<K>& star = w.star;
+    // Subdomains around v, and the boundary of each one's part of the star.
+    std::map<int, std::vector<std::array<int, 2>>> side_boundary;
+    for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
+    {
+      const int c = mesh.incidences[k].cell;
+      if(!mesh.in_mesh[c]) continue;
+      auto& facets = side_boundary[mesh.subdomain[c]];
+      for(int i = 0; i < 4; ++i)
+      {
+        if(mesh.cells[c][i] == v) continue;
+        const int n = mesh.neighbor[4 * c + i];
+        if(n >= 0 && mesh.in_mesh[n] && mesh.subdomain[n] == mesh.subdomain[c]) continue;
+        const auto& o = internal::facet_opposite[i];
+        const int f[3] = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
+        for(int j = 0; j < 3; ++j)
+          if(f[j] == v) facets.push_back({f[(j + 1) % 3], f[(j + 2) % 3]});
+      }
+    }
+    if(side_boundary.empty()) return;                            // rule 1
+    const bool interior = side_boundary.size() == 1 && side_boundary.begin()->second.empty();
+    if(!interior && !opt.move_boundary) return;
+    bool manifold = true;
+    for(const auto& side : side_boundary) manifold = manifold && internal::is_one_cycle(side.second);
+    if(!manifold)                                                // rule 2
+    {
+      ++w.non_manifold;
+      return;
+    }
+
+    const signed char dim = v < static_cast<int>(hints.dimension.size()) ? hints.dimension[v] : -1;
+    Vertex_kind kind = interior ? Vertex_kind::interior : Vertex_kind::surface;
+    if(opt.preserve_features)
+    {
+      const std::size_t degree = feature_nbrs[v].size();
+      const bool voting = out.used_tensor_voting && !interior && mesh.boundary_begin[v + 1] > mesh.boundary_begin[v];
+      Tensor_vote<K> vote{Voted_kind::surface, typename K::Vector_3(0, 0, 0)};
+      if(voting)
+      {
+        mesh.gather_star(v, star);
+        vote = tensor_vote(star, opt.tensor_voting);
+      }
+      // Two feature edges make a curve point only if the curve goes on: a turn of
+      // more than 60 degrees (or a crossing with a voted edge) is a corner.
+      bool curve_point = false;
+      if(degree == 2)
+      {
+        const auto u = mesh.points[feature_nbrs[v][0]] - mesh.points[v];
+        const auto w = mesh.points[feature_nbrs[v][1]] - mesh.points[v];
+        curve_point = u * w < -0.5 * std::sqrt(u.squared_length() * w.squared_length());
+        if(curve_point && vote.kind == Voted_kind::feature)
+        {
+          const auto chord = w - u;
+          curve_point = std::abs(chord * vote.direction) >=
+                        0.9 * std::sqrt(chord.squared_length() * vote.direction.squared_length());
+        }
+      }
+      if(is_corner[v] || dim == 0 || vote.kind == Voted_kind::corner || (degree > 0 && !curve_point))
+        kind = Vertex_kind::fixed;
+      else if(degree == 2)
+      {
+        kind = Vertex_kind::feature;
+        out.curve_neighbors[v] = {feature_nbrs[v][0], feature_nbrs[v][1]};
+      }
+      else if(dim == 1)
+        kind = Vertex_kind::fixed;                               // a curve vertex whose curve is unknown
+      else if(vote.kind == Voted_kind::feature)
+        kind = Vertex_kind::feature;
+    }
+    out.kind[v] = kind;
+  }, 256);
+  workers.each_worker([&out](const Worker& w) { out.non_manifold += w.non_manifold; });
+  return out;
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_INTERNAL_CLASSIFICATION_VERTEX_CLASSIFICATION_H

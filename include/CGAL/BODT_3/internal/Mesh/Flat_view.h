@@ -1,0 +1,187 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_INTERNAL_MESH_FLAT_VIEW_H
+#define CGAL_BODT_3_INTERNAL_MESH_FLAT_VIEW_H
+
+#include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
+#include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
+#include <CGAL/BODT_3/internal/Utilities/bare_point.h>
+#include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
+
+#include <CGAL/Kernel_traits.h>
+
+#include <iterator>
+#include <map>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// The flat view (`Flat_mesh`) of a 3D triangulation (`Triangulation_3`,
+/// `Delaunay_triangulation_3`, `Regular_triangulation_3`, or the triangulation of
+/// a C3T3) that the smoothing sweeps work on, with stable vertex ids (the order of
+/// the finite vertices, vertices added later appended). `Labels` (Mesh_labels.h)
+/// says which cells are the mesh and their subdomains. The view never changes the
+/// connectivity: flips and insertion change the triangulation, and `refresh`
+/// re-reads its cells. Positions go back with `Vertex::set_point`, keeping the
+/// weight of weighted points.
+template <class Labels>
+class Flat_view
+{
+public:
+  using Tr = typename Labels::Triangulation;
+  using Vertex_handle = typename Tr::Vertex_handle;
+  using Cell_handle = typename Tr::Cell_handle;
+  using Bare_point = Bare_point_t<Tr>;
+  using Kernel = typename CGAL::Kernel_traits<Bare_point>::Kernel;
+  using Mesh = Flat_mesh<Kernel>;
+
+  /// `threads`: as `Smoothing_options::threads`; the view does not depend on it.
+  explicit Flat_view(Labels& labels, int threads = 1) : labels_(labels), workers_(threads)
+  {
+    if(labels.triangulation().dimension() != 3)
+      throw std::invalid_argument("B-ODT smoothing needs a triangulation of dimension 3");
+    mesh_.threads = threads;
+    refresh();
+  }
+
+  Mesh& mesh() { return mesh_; }
+  const Mesh& mesh() const { return mesh_; }
+  const Labels& labels() const { return labels_; }
+  const std::vector<Cell_handle>& cells() const { return cells_; }
+  const std::vector<Vertex_handle>& vertices() const { return handles_; }
+  int index(Vertex_handle v) const
+  {
+    const int i = index_.find(v);
+    if(i < 0) throw std::out_of_range("vertex not in the view");
+    return i;
+  }
+
+  /// Re-reads the cells (and any new vertex) of the triangulation, with their
+  /// regions, the hull checks and the incidences.
+  void refresh()
+  {
+    Tr& tr = labels_.triangulation();
+    auto cp = tr.geom_traits().construct_point_3_object();
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      if(index_.insert(v, static_cast<int>(handles_.size())))
+      {
+        handles_.push_back(v);
+        mesh_.points.push_back(cp(v->point()));
+      }
+    cells_.clear();
+    cell_index_.reset(tr.tds().number_of_cells());
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
+    cell_index_.insert_all(cells_, workers_);
+    // Then each cell's vertices, region and neighbours: lookups only, in parallel.
+    // The adjacency is the triangulation's (the view's facet k is opposite vertex k, as in the cell).
+    const std::size_t nc = cells_.size();
+    mesh_.cells.resize(nc);
+    mesh_.in_mesh.resize(nc);
+    mesh_.subdomain.resize(nc);
+    mesh_.neighbor.resize(4 * nc);
+    workers_.for_each(0, static_cast<int>(nc), [this](char&, int k) {
+      const Cell_handle c = cells_[static_cast<std::size_t>(k)];
+      mesh_.cells[k] = {index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))};
+      const auto r = labels_.region(c);
+      mesh_.in_mesh[k] = r.kind == Region_kind::mesh ? 1 : 0;
+      mesh_.subdomain[k] = r.kind == Region_kind::mesh ? static_cast<int>(r.subdomain) : 0;
+      for(int i = 0; i < 4; ++i) mesh_.neighbor[4 * static_cast<std::size_t>(k) + i] = cell_index_.find(c->neighbor(i));
+    }, 1024);
+    mesh_.hull_checks.clear();
+    if(labels_.convex_hull()) add_hull_checks();
+    mesh_.build_incidences();
+  }
+
+  /// Writes the positions of `mesh()` back into the triangulation.
+  void write_back()
+  {
+    for(std::size_t i = 0; i < handles_.size(); ++i) set_bare_point(labels_.triangulation(), handles_[i], mesh_.points[i]);
+  }
+
+  /// Re-reads the positions from the triangulation (after moves made on it directly).
+  void read_points()
+  {
+    for(std::size_t i = 0; i < handles_.size(); ++i) mesh_.points[i] = bare_point(labels_.triangulation(), handles_[i]);
+  }
+
+private:
+  // For each hull facet and each of its three neighbours on the hull, the far
+  // vertex of the neighbour must stay on the inner side of the facet's plane;
+  // checks that do not hold now (a hull that is not convex there) are left out.
+  void add_hull_checks()
+  {
+    Tr& tr = labels_.triangulation();
+    const Vertex_handle inf = tr.infinite_vertex();
+    std::vector<Cell_handle> hull;
+    tr.tds().incident_cells(inf, std::back_inserter(hull));
+    for(const Cell_handle& c : hull)
+    {
+      const int i = c->index(inf);
+      const Cell_handle fc = c->neighbor(i);
+      const int j = fc->index(c);
+      const auto& o = internal::facet_opposite[j];
+      // Swap two vertices of facet_opposite[j] so that the interior is on the positive side.
+      const int a = index(fc->vertex(o[0])), b = index(fc->vertex(o[2])), d = index(fc->vertex(o[1]));
+      for(int k = 0; k < 4; ++k)
+      {
+        if(k == i) continue;
+        const Cell_handle nc = c->neighbor(k);
+        const Vertex_handle w = nc->vertex(nc->index(c));
+        if(w == inf) continue;
+        const int wi = index(w);
+        if(CGAL::orientation(mesh_.points[a], mesh_.points[b], mesh_.points[d], mesh_.points[wi]) !=
+           CGAL::NEGATIVE)
+          mesh_.hull_checks.push_back({a, b, d, wi});
+      }
+    }
+  }
+
+  Labels& labels_;
+  Thread_workers<char> workers_;
+  Mesh mesh_;
+  std::vector<Vertex_handle> handles_;
+  std::vector<Cell_handle> cells_;
+  Handle_index_map<Vertex_handle> index_;
+  Handle_index_map<Cell_handle> cell_index_;
+};
+
+/// What a `Mesh_complex_3_in_triangulation_3` knows of its features: vertex
+/// dimensions, curve edges, corners and surface patches, by view vertex id. The
+/// vertices of facets of the complex between two cells of the same subdomain (an
+/// embedded surface) count as corners: they stay fixed, so the surface does.
+template <class C3T3, class View>
+Feature_hints c3t3_feature_hints(const C3T3& c3t3, const View& view)
+{
+  Feature_hints hints;
+  hints.dimension.resize(view.vertices().size());
+  for(std::size_t v = 0; v < view.vertices().size(); ++v)
+    hints.dimension[v] = static_cast<signed char>(c3t3.in_dimension(view.vertices()[v]));
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e)
+    hints.feature_edges.push_back({view.index(e->first->vertex(e->second)), view.index(e->first->vertex(e->third))});
+  for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v)
+    hints.corners.push_back(view.index(v));
+  std::map<typename C3T3::Surface_patch_index, int> patch_ids;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
+    const auto id = patch_ids.emplace(c3t3.surface_patch_index(*f), static_cast<int>(patch_ids.size())).first->second;
+    std::array<int, 3> t;
+    for(int k = 0, m = 0; k < 4; ++k)
+      if(k != f->second) t[m++] = view.index(f->first->vertex(k));
+    hints.facet_patches.push_back({t, id});
+    // A facet between two cells of one region is an embedded surface, which no
+    // volume or interface rule holds in place: its vertices stay where they are.
+    if(view.labels().region(f->first) == view.labels().region(f->first->neighbor(f->second)))
+      hints.corners.insert(hints.corners.end(), t.begin(), t.end());
+  }
+  return hints;
+}
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_INTERNAL_MESH_FLAT_VIEW_H

@@ -1,0 +1,266 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_INTERNAL_SMOOTHING_MOVE_GUARD_H
+#define CGAL_BODT_3_INTERNAL_SMOOTHING_MOVE_GUARD_H
+
+#include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
+#include <CGAL/BODT_3/internal/Quality/tet_quality.h>
+
+#include <CGAL/FPU.h>
+
+#include <CGAL/Kernel/global_functions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// Decides whether a vertex may go to a new position, and applies accepted moves.
+///
+/// Validity (always): every finite cell incident to the vertex, in the mesh or
+/// not, stays positively oriented, decided by CGAL's exact orientation predicate;
+/// for a triangulation, every locally convex hull edge next to the vertex stays
+/// convex, so the convex hull remains one.
+///
+/// Volume (with a budget): a vertex whose mesh cells are of one subdomain and
+/// which is on no boundary keeps that volume exactly, since its link stays; any
+/// other move costs what `Volume_change` bounds for the subdomains of its star,
+/// and is refused above the allowance `allow` set (see Volume_budget).
+///
+/// Quality (when `quality_guard` is on): the worst mesh cell of the star, by the
+/// measure of tet_quality.h (minimum dihedral sine by default), is not worse after the move,
+/// and every mesh cell of the star stays within `bounds` (the input's extreme
+/// dihedral angles). Since a move only changes the cells of its star, the mesh's
+/// worst cell never gets worse, nor does either extreme angle.
+///
+/// A refused move is retried at 1/2, 1/4 and 1/8 of its length before giving up.
+///
+/// What one attempt leaves behind (the star's new qualities, why it was refused)
+/// lives in a `Trial` that the caller owns: vertices with disjoint stars can be
+/// judged and moved concurrently, each thread with its own trial.
+template <class K>
+class Move_guard
+{
+public:
+  using Point = typename K::Point_3;
+  using Vector = typename K::Vector_3;
+
+  static constexpr int max_halvings = 3;
+
+  /// Why the last refused position was refused.
+  enum class Refusal
+  {
+    inverts_mesh_cell,
+    inverts_outside_cell,
+    breaks_convex_hull,
+    changes_volume,
+    worsens_quality
+  };
+
+  /// The state of one attempt, owned by the caller (one per thread).
+  struct Trial
+  {
+    std::vector<double> qualities;   // the star's mesh cells at the position judged last
+    Refusal last_refusal = Refusal::worsens_quality;
+    Refusal first_refusal = Refusal::worsens_quality;   // of the full-length move
+    Volume_change volume;
+    double cost = 0;   // of the position judged last, in the budget's units
+  };
+
+  /// `threads` measure the cells (`refresh`); nothing depends on their number.
+  /// `budget`, when given, prices the moves that may change a subdomain's volume.
+  Move_guard(Flat_mesh<K>& mesh, bool quality_guard, const Dihedral_bounds& bounds,
+             Quality_measure measure = Quality_measure::min_dihedral_sine, int threads = 1,
+             const Volume_budget* budget = nullptr)
+    : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds), measure_(measure), workers_(threads),
+      budget_(budget && budget->limited() ? budget : nullptr)
+  {
+    if(budget_) allowance_ = budget_->allowance();
+    refresh();
+  }
+
+  /// The most a move may cost until the next call (a share of the budget's allowance).
+  void allow(double allowance) { allowance_ = allowance; }
+
+  /// Whether moves of `v` keep every subdomain's volume exactly (see the class comment).
+  bool keeps_volume(int v) const { return !budget_ || keeps_volume_[v]; }
+
+  /// Re-reads the cell qualities and which vertices keep their volume, after the mesh's cells changed.
+  void refresh()
+  {
+    if(budget_)
+    {
+      const int nv = static_cast<int>(mesh_.number_of_vertices());
+      keeps_volume_.assign(nv, 1);
+      workers_.for_each(0, nv, [this](char&, int v) {
+        int first = -1;   // the first mesh cell around v
+        bool one = mesh_.boundary_begin[v] == mesh_.boundary_begin[v + 1];
+        for(int k = mesh_.incidence_begin[v]; one && k < mesh_.incidence_begin[v + 1]; ++k)
+        {
+          const int c = mesh_.incidences[k].cell;
+          if(!mesh_.in_mesh[c]) continue;
+          if(first < 0) first = c;
+          one = mesh_.subdomain[c] == mesh_.subdomain[first];
+        }
+        keeps_volume_[v] = one;
+      }, 1024);
+    }
+    if(!quality_guard_) return;
+    quality_.resize(mesh_.cells.size());
+    workers_.for_each(0, static_cast<int>(mesh_.cells.size()), [this](char&, int c) {
+      const auto& q = mesh_.cells[c];
+      quality_[c] = tet_quality(measure_, mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]);
+    }, 1024);
+  }
+
+  /// Moves `v` by `X`, or by the longest of X/2, X/4, X/8 that is accepted;
+  /// each position goes through `place` first (NODT projects it on the boundary).
+  /// Returns the fraction of X applied (0 when the vertex stays).
+  template <class Place>
+  double move(int v, const Vector& X, const Place& place, Trial& trial)
+  {
+    const Point x0 = mesh_.points[v];
+    double fraction = 1.0;
+    for(int h = 0; h <= max_halvings; ++h, fraction *= 0.5)
+    {
+      const Point p = place(x0 + fraction * X);
+      if(p == x0) return 0.0;
+      if(accepts(v, p, trial))
+      {
+        apply(v, p, trial);
+        return fraction;
+      }
+      if(h == 0) trial.first_refusal = trial.last_refusal;
+    }
+    return 0.0;
+  }
+
+  double move(int v, const Vector& X, Trial& trial)
+  {
+    return move(v, X, [](const Point& p) { return p; }, trial);
+  }
+
+  /// The quality of cell `c` now.
+  double cell_quality(int c) const { return quality_[c]; }
+
+  /// The worst quality of the mesh cells around `v` now.
+  double worst_around(int v) const
+  {
+    double worst = 2;
+    for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
+    {
+      const int c = mesh_.incidences[k].cell;
+      if(mesh_.in_mesh[c]) worst = std::min(worst, quality_[c]);
+    }
+    return worst;
+  }
+
+  /// The worst quality of the mesh cells around the vertex at the position the
+  /// last successful `accepts` with this trial judged (2 without mesh cells).
+  static double accepted_worst(const Trial& trial)
+  {
+    double worst = 2;
+    for(double q : trial.qualities) worst = std::min(worst, q);
+    return worst;
+  }
+
+  /// Whether `v` may go to `p` (see the class comment). Leaves the star's new
+  /// cell qualities in the trial, for `apply`.
+  bool accepts(int v, const Point& p, Trial& trial) const
+  {
+    const auto& m = mesh_;
+    for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
+    {
+      const auto& f = m.incidences[k].face;
+      if(CGAL::orientation(p, m.points[f[0]], m.points[f[1]], m.points[f[2]]) != CGAL::POSITIVE)
+      {
+        trial.last_refusal = m.in_mesh[m.incidences[k].cell] ? Refusal::inverts_mesh_cell : Refusal::inverts_outside_cell;
+        return false;
+      }
+    }
+    for(int k = m.hull_begin[v]; k < m.hull_begin[v + 1]; ++k)
+    {
+      const auto& h = m.vertex_hull_checks[k];
+      const Point& a = h[0] == v ? p : m.points[h[0]];
+      const Point& b = h[1] == v ? p : m.points[h[1]];
+      const Point& c = h[2] == v ? p : m.points[h[2]];
+      if(CGAL::orientation(a, b, c, m.points[h[3]]) == CGAL::NEGATIVE)
+      {
+        trial.last_refusal = Refusal::breaks_convex_hull;
+        return false;
+      }
+    }
+    trial.cost = 0;
+    if(!keeps_volume(v))
+    {
+      trial.volume.clear();
+      {
+        CGAL::Protect_FPU_rounding<true> upward;
+        for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
+        {
+          const int c = m.incidences[k].cell;
+          if(!m.in_mesh[c]) continue;
+          const auto& f = m.incidences[k].face;
+          trial.volume.add_move(m.subdomain[c], m.points[v], p, m.points[f[0]], m.points[f[1]], m.points[f[2]]);
+        }
+      }
+      trial.cost = budget_->cost(trial.volume);
+      if(!(trial.cost <= allowance_))
+      {
+        trial.last_refusal = Refusal::changes_volume;
+        return false;
+      }
+    }
+    trial.last_refusal = Refusal::worsens_quality;
+    if(!quality_guard_) return true;
+
+    const double old_worst = worst_around(v);
+    trial.qualities.clear();
+    for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
+    {
+      const int c = m.incidences[k].cell;
+      if(!m.in_mesh[c]) continue;
+      const auto& f = m.incidences[k].face;
+      const Point &a = m.points[f[0]], &b = m.points[f[1]], &d = m.points[f[2]];
+      const double q = tet_quality(measure_, p, a, b, d);
+      if(q < old_worst ||
+         !bounds_.contains(p, a, b, d, measure_ == Quality_measure::min_dihedral_sine ? q : 0.0))
+        return false;
+      trial.qualities.push_back(q);
+    }
+    return true;
+  }
+
+  /// Moves `v` to `p`, which `accepts(v, p, trial)` has just approved.
+  void apply(int v, const Point& p, const Trial& trial)
+  {
+    mesh_.points[v] = p;
+    if(!quality_guard_) return;
+    std::size_t i = 0;
+    for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
+    {
+      const int c = mesh_.incidences[k].cell;
+      if(mesh_.in_mesh[c]) quality_[c] = trial.qualities[i++];
+    }
+  }
+
+private:
+  Flat_mesh<K>& mesh_;
+  bool quality_guard_;
+  Dihedral_bounds bounds_;
+  Quality_measure measure_;
+  std::vector<double> quality_;   // per cell
+  Thread_workers<char> workers_;
+  const Volume_budget* budget_;     // null: volume not priced
+  double allowance_ = 0;
+  std::vector<char> keeps_volume_;   // per vertex
+};
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_INTERNAL_SMOOTHING_MOVE_GUARD_H

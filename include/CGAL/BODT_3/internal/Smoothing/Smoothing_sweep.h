@@ -1,0 +1,307 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_INTERNAL_SMOOTHING_SMOOTHING_SWEEP_H
+#define CGAL_BODT_3_INTERNAL_SMOOTHING_SMOOTHING_SWEEP_H
+
+#include <CGAL/BODT_3/internal/Moves/Boundary_projection.h>
+#include <CGAL/BODT_3/internal/Smoothing/Move_guard.h>
+#include <CGAL/BODT_3/internal/Moves/Nodt_move.h>
+#include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
+#include <CGAL/BODT_3/Smoothing_options.h>
+#include <CGAL/BODT_3/Smoothing_result.h>
+#include <CGAL/BODT_3/internal/Classification/Tensor_voting.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
+#include <CGAL/BODT_3/internal/Moves/Volume_preserving_move.h>
+#include <CGAL/BODT_3/internal/Smoothing/sweep_order.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// Smoothing sweeps over a `Flat_mesh`: every movable vertex, in
+/// `sweep_order`, gets its volume-preserving B-ODT move (`Volume_preserving_move`)
+/// through `Move_guard` (with NODT, surface vertices get `Nodt_move`, projected on
+/// the boundary the mesh had when the sweeps began). After the mesh's cells change (flips, insertion), call
+/// `refresh` with the vertices whose stars changed. With a `budget`, moves that may
+/// change a subdomain's volume are priced and paid from it (Volume_budget.h).
+template <class K>
+class Smoothing_sweep
+{
+public:
+  using Vector = typename K::Vector_3;
+
+  Smoothing_sweep(Flat_mesh<K>& mesh, const Vertex_classification& classification, const Smoothing_options& opt,
+                  const Dihedral_bounds& bounds, Volume_budget* budget = nullptr)
+    : mesh_(mesh), classification_(classification), opt_(opt),
+      guard_(mesh, opt.quality_guard, bounds, opt.quality_measure, opt.threads, budget), budget_(budget),
+      workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1), moved_now_(mesh.number_of_vertices(), 0),
+      moved_once_(mesh.number_of_vertices(), 0), cost_(mesh.number_of_vertices(), 0)
+  {
+    if(opt.smoothing_method == Smoothing_method::NODT) projection_ = std::make_unique<Boundary_projection<K>>(mesh);
+    derive();
+  }
+
+  /// After the cells of the mesh changed (and `build_incidences` ran), with the
+  /// vertices whose stars changed; vertices added since are appended to the
+  /// classification by the caller before this call.
+  void refresh(const std::vector<int>& changed)
+  {
+    dirty_.resize(mesh_.number_of_vertices(), 1);
+    moved_now_.resize(mesh_.number_of_vertices(), 0);
+    moved_once_.resize(mesh_.number_of_vertices(), 0);
+    cost_.resize(mesh_.number_of_vertices(), 0);
+    for(int v : changed) dirty_[v] = 1;
+    derive();
+    for(int v : changed)
+      mark_dependents(v);
+    guard_.refresh();
+  }
+
+  /// One sweep; fills the move counts of `stats`. Colour by colour: vertices of
+  /// one colour share no cell and check no hull facet of one another, so their
+  /// moves read nothing the others write; they run concurrently (`opt.threads`),
+  /// and the result is the same, bit for bit, on any number of threads.
+  void run(Iteration_stats& stats)
+  {
+    for(std::size_t k = 0; k + 1 < order_.colour_begin.size(); ++k)
+    {
+      const int begin = order_.colour_begin[k], end = order_.colour_begin[k + 1];
+      if(budget_)
+      {
+        // The colour's moves that may change a volume share one allowance.
+        std::size_t priced = 0;
+        for(int i = begin; i < end; ++i)
+          priced += dirty_[order_.vertices[i]] && !guard_.keeps_volume(order_.vertices[i]);
+        guard_.allow(budget_->allowance(priced));
+      }
+      workers_.for_each(begin, end, [this](Worker& w, int i) { visit(order_.vertices[i], w); });
+      // Then, in the sequential order: what the moves changed, and what they cost.
+      for(int i = begin; i < end; ++i)
+      {
+        const int v = order_.vertices[i];
+        if(!moved_now_[v]) continue;
+        if(budget_) budget_->spend(cost_[v]);
+        moved_now_[v] = 0;
+        moved_once_[v] = 1;
+        moved_.push_back(v);
+        dirty_[v] = 1;
+        mark_dependents(v);
+      }
+    }
+    workers_.each_worker([&stats](Worker& w) {
+      const Iteration_stats& c = w.counts;
+      stats.moved += c.moved;
+      stats.shortened += c.shortened;
+      stats.refused += c.refused;
+      stats.refused_inverting_mesh_cell += c.refused_inverting_mesh_cell;
+      stats.refused_inverting_outside_cell += c.refused_inverting_outside_cell;
+      stats.refused_breaking_hull += c.refused_breaking_hull;
+      stats.refused_changing_volume += c.refused_changing_volume;
+      stats.refused_worsening_quality += c.refused_worsening_quality;
+      stats.max_relative_move = std::max(stats.max_relative_move, c.max_relative_move);
+      w.counts = Iteration_stats();
+    });
+  }
+
+  /// The fallback where B-ODT stalls: each movable vertex of a mesh cell whose
+  /// quality is below `threshold` takes compass steps (the directions that keep every
+  /// subdomain's volume and its feature, `Volume_preserving_move::free_directions`,
+  /// both ways, from a fifth of its shortest edge down to a thousandth) that raise
+  /// the worst cell of its star, through the guard. Needs the quality guard.
+  void raise_worst(double threshold, Iteration_stats& stats)
+  {
+    // Each accepted step raises the star's worst cell, but by as little as it
+    // likes: with the largest angle as the measure, some vertices zigzag at the
+    // smallest step for thousands of steps (the small generated sharp_part). At
+    // most this many rounds (a step or a halving) per vertex and call.
+    constexpr int max_min_steps = 200;
+    if(!opt_.quality_guard) return;
+    std::vector<int> vertices;
+    for(std::size_t c = 0; c < mesh_.cells.size(); ++c)
+      if(mesh_.in_mesh[c] && guard_.cell_quality(static_cast<int>(c)) < threshold)
+        vertices.insert(vertices.end(), mesh_.cells[c].begin(), mesh_.cells[c].end());
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    Vertex_star<K> star;
+    Vector dirs[3];
+    for(int v : vertices)
+    {
+      const Vertex_kind kind = classification_.kind[v];
+      if(kind == Vertex_kind::fixed) continue;
+      mesh_.gather_star(v, star);
+      const int n = mover_.free_directions(star, kind, feature_direction(v, star), dirs);
+      if(n == 0) continue;
+      double shortest = std::numeric_limits<double>::infinity();
+      for(const auto& c : star.cells)
+        for(const auto* p : {&c.a, &c.b, &c.c}) shortest = std::min(shortest, CGAL::squared_distance(star.x0, *p));
+      shortest = std::sqrt(shortest);
+      double worst = guard_.worst_around(v);
+      bool moved = false;
+      int steps = 0;
+      for(double h = 0.2 * shortest; h > 1e-3 * shortest && steps < max_min_steps; ++steps)
+      {
+        typename K::Point_3 best;
+        double best_worst = worst;
+        for(int d = 0; d < n; ++d)
+          for(double sign : {1.0, -1.0})
+          {
+            const typename K::Point_3 p = mesh_.points[v] + (sign * h) * dirs[d];
+            if(budget_) guard_.allow(budget_->allowance());
+            if(guard_.accepts(v, p, trial_) && Move_guard<K>::accepted_worst(trial_) > best_worst)
+            {
+              best_worst = Move_guard<K>::accepted_worst(trial_);
+              best = p;
+            }
+          }
+        if(best_worst > worst)
+        {
+          guard_.accepts(v, best, trial_);
+          guard_.apply(v, best, trial_);
+          if(budget_) budget_->spend(trial_.cost);
+          worst = best_worst;
+          moved = true;
+        }
+        else
+          h *= 0.5;
+      }
+      if(!moved) continue;
+      ++stats.max_min_moves;
+      moved_.push_back(v);
+      moved_once_[v] = 1;
+      dirty_[v] = 1;
+      mark_dependents(v);
+    }
+  }
+
+  /// The quality of cell `c` now (kept up to date by the quality guard; meaningless without it).
+  double cell_quality(int c) const { return guard_.cell_quality(c); }
+
+  /// The vertices moved since the last `forget_moves`.
+  const std::vector<int>& moved() const { return moved_; }
+  void forget_moves() { moved_.clear(); }
+
+  /// Whether vertex `v` moved so far.
+  bool has_moved(int v) const { return moved_once_[v] != 0; }
+
+private:
+  // The sweep order and, per vertex, the vertices whose move depends on it: a
+  // vertex whose last move was zero or refused gets the same verdict again until
+  // a vertex of its star, or the far vertex of one of its hull checks, moves; such
+  // vertices are skipped, which changes no result.
+  void derive()
+  {
+    const int nv = static_cast<int>(mesh_.number_of_vertices());
+    std::vector<char> movable(nv);
+    for(int v = 0; v < nv; ++v) movable[v] = classification_.kind[v] != Vertex_kind::fixed;
+    order_ = sweep_order(mesh_, movable);
+    // The vertices to revisit when u moves: the movable vertices sharing a cell
+    // with u, and those with a hull check whose far vertex is u. Flat (one array
+    // for all): re-derived after every pass that changes the connectivity.
+    std::vector<int> stamp(nv, -1);
+    dependent_begin_.assign(nv + 1, 0);
+    dependents_.clear();
+    for(int u = 0; u < nv; ++u)
+    {
+      dependent_begin_[u] = static_cast<int>(dependents_.size());
+      auto add = [&](int w) {
+        if(w == u || !movable[w] || stamp[w] == u) return;
+        stamp[w] = u;
+        dependents_.push_back(w);
+      };
+      for(int k = mesh_.incidence_begin[u]; k < mesh_.incidence_begin[u + 1]; ++k)
+        for(int w : mesh_.incidences[k].face) add(w);
+      for(int k = mesh_.checked_begin[u]; k < mesh_.checked_begin[u + 1]; ++k) add(mesh_.checked_by[k]);
+    }
+    dependent_begin_[nv] = static_cast<int>(dependents_.size());
+  }
+
+  // The direction of the curve through a feature vertex: the chord of its two
+  // curve neighbours, or tensor voting's where the curve is not known (zero for
+  // other vertices). The neighbours share a cell with it (the colouring relies on it).
+  Vector feature_direction(int v, const Vertex_star<K>& star) const
+  {
+    if(classification_.kind[v] != Vertex_kind::feature) return Vector(0, 0, 0);
+    const auto& nb = classification_.curve_neighbors[v];
+    return nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]] : tensor_vote(star, opt_.tensor_voting).direction;
+  }
+
+  // What one thread keeps: its scratch space and its counts of the sweep.
+  struct Worker
+  {
+    Vertex_star<K> star;
+    typename Move_guard<K>::Trial trial;
+    Iteration_stats counts;
+  };
+
+  // One vertex's move; writes only the vertex, the qualities of its star's cells,
+  // its own flags and the worker.
+  void visit(int v, Worker& w)
+  {
+    if(!dirty_[v]) return;
+    dirty_[v] = 0;
+    Vertex_star<K>& star = w.star;
+    Iteration_stats& stats = w.counts;
+    const Vertex_kind kind = classification_.kind[v];
+    mesh_.gather_star(v, star);
+    const bool natural = projection_ && kind == Vertex_kind::surface;
+    const Vector X = natural ? Nodt_move()(star) : mover_(star, kind, feature_direction(v, star));
+    if(X == CGAL::NULL_VECTOR) return;
+    const double fraction = natural ? guard_.move(v, X, *projection_, w.trial) : guard_.move(v, X, w.trial);
+    if(fraction == 0)
+    {
+      ++stats.refused;
+      using Refusal = typename Move_guard<K>::Refusal;
+      switch(w.trial.first_refusal)
+      {
+      case Refusal::inverts_mesh_cell: ++stats.refused_inverting_mesh_cell; break;
+      case Refusal::inverts_outside_cell: ++stats.refused_inverting_outside_cell; break;
+      case Refusal::breaks_convex_hull: ++stats.refused_breaking_hull; break;
+      case Refusal::changes_volume: ++stats.refused_changing_volume; break;
+      case Refusal::worsens_quality: ++stats.refused_worsening_quality; break;
+      }
+      return;
+    }
+    ++stats.moved;
+    if(fraction < 1) ++stats.shortened;
+    moved_now_[v] = 1;
+    cost_[v] = w.trial.cost;
+    double volume = 0;
+    for(const auto& c : star.cells) volume += CGAL::determinant(c.a - star.x0, c.b - star.x0, c.c - star.x0);
+    const double size = std::cbrt(volume / 6.0 / static_cast<double>(star.cells.size()));
+    stats.max_relative_move = std::max(stats.max_relative_move, fraction * std::sqrt(X.squared_length()) / size);
+  }
+
+  void mark_dependents(int v)
+  {
+    for(int k = dependent_begin_[v]; k < dependent_begin_[v + 1]; ++k) dirty_[dependents_[k]] = 1;
+  }
+
+  Flat_mesh<K>& mesh_;
+  const Vertex_classification& classification_;
+  const Smoothing_options& opt_;
+  Move_guard<K> guard_;
+  Volume_budget* budget_;   // null: volume not priced
+  typename Move_guard<K>::Trial trial_;   // for the sequential max-min steps
+  Thread_workers<Worker> workers_;
+  Volume_preserving_move mover_;
+  std::unique_ptr<Boundary_projection<K>> projection_;   // NODT: the input's boundary
+  Sweep_order order_;
+  std::vector<int> dependent_begin_;   // per vertex, into dependents_
+  std::vector<int> dependents_;
+  std::vector<char> dirty_;
+  std::vector<char> moved_now_;   // moved in the colour being swept
+  std::vector<char> moved_once_;
+  std::vector<double> cost_;   // of each vertex's move in the colour being swept
+  std::vector<int> moved_;
+};
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_INTERNAL_SMOOTHING_SMOOTHING_SWEEP_H

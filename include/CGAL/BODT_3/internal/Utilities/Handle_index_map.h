@@ -1,0 +1,131 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_INTERNAL_UTILITIES_HANDLE_INDEX_MAP_H
+#define CGAL_BODT_3_INTERNAL_UTILITIES_HANDLE_INDEX_MAP_H
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// Index of a triangulation's vertex or cell handle, by the address of what it
+/// points to: an open-addressing hash table (linear probing, no node per entry).
+/// The flat view re-reads every cell after each pass that changes the
+/// connectivity; with `std::unordered_map` that re-reading cost more than a
+/// smoothing sweep. Lookups only: the order of iteration never matters.
+template <class Handle>
+class Handle_index_map
+{
+public:
+  /// Empties the map and makes room for `n` entries without growing.
+  void reset(std::size_t n)
+  {
+    std::size_t capacity = 16;
+    while(capacity < 2 * n) capacity *= 2;
+    allocate(capacity);
+    size_ = 0;
+  }
+
+  std::size_t size() const { return size_; }
+
+  /// Inserts (h, index) unless h is there; returns whether it was inserted.
+  bool insert(Handle h, int index)
+  {
+    if(2 * (size_ + 1) > capacity_) grow();
+    if(!place(address(h), index)) return false;
+    ++size_;
+    return true;
+  }
+
+  /// Inserts (handles[i], i) for every i, from `workers` threads (Thread_workers.h),
+  /// into a map that holds none of them. Slots are claimed by compare-and-swap, so
+  /// where an entry lands depends on the threads, what `find` returns does not.
+  template <class Workers>
+  void insert_all(const std::vector<Handle>& handles, Workers& workers)
+  {
+    while(2 * (size_ + handles.size()) > capacity_) grow();
+    workers.for_each(0, static_cast<int>(handles.size()), [&](auto&, int i) {
+      place(address(handles[static_cast<std::size_t>(i)]), i);
+    }, 4096);
+    size_ += handles.size();
+  }
+
+  /// The index of h, or -1.
+  int find(Handle h) const
+  {
+    if(capacity_ == 0) return -1;
+    const std::uintptr_t key = address(h);
+    for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
+    {
+      const std::uintptr_t k = keys_[s].load(std::memory_order_relaxed);
+      if(k == key) return index_[s];
+      if(k == 0) return -1;
+    }
+  }
+
+private:
+  static std::uintptr_t address(Handle h) { return reinterpret_cast<std::uintptr_t>(std::addressof(*h)); }
+
+  std::size_t slot(std::uintptr_t key) const
+  {
+    // Fibonacci hashing of the address; the low bits are alignment.
+    const std::uint64_t mixed = (static_cast<std::uint64_t>(key) >> 3) * 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(mixed >> 32) & (capacity_ - 1);
+  }
+
+  // Claims the first free slot from key's (key 0 marks a free slot: no element
+  // lives at address 0); false when the key is there already.
+  bool place(std::uintptr_t key, int index)
+  {
+    for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
+    {
+      std::uintptr_t expected = 0;
+      if(keys_[s].compare_exchange_strong(expected, key, std::memory_order_relaxed))
+      {
+        index_[s] = index;
+        return true;
+      }
+      if(expected == key) return false;
+    }
+  }
+
+  void allocate(std::size_t capacity)
+  {
+    if(capacity != capacity_)
+    {
+      keys_.reset(new std::atomic<std::uintptr_t>[capacity]);
+      index_.reset(new int[capacity]);
+      capacity_ = capacity;
+    }
+    for(std::size_t s = 0; s < capacity_; ++s) keys_[s].store(0, std::memory_order_relaxed);
+  }
+
+  void grow()
+  {
+    std::unique_ptr<std::atomic<std::uintptr_t>[]> keys = std::move(keys_);
+    std::unique_ptr<int[]> index = std::move(index_);
+    const std::size_t old = capacity_;
+    capacity_ = 0;
+    allocate(old == 0 ? 16 : 2 * old);
+    for(std::size_t s = 0; s < old; ++s)
+    {
+      const std::uintptr_t k = keys[s].load(std::memory_order_relaxed);
+      if(k != 0) place(k, index[s]);
+    }
+  }
+
+  std::unique_ptr<std::atomic<std::uintptr_t>[]> keys_;
+  std::unique_ptr<int[]> index_;
+  std::size_t capacity_ = 0;
+  std::size_t size_ = 0;
+};
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_INTERNAL_UTILITIES_HANDLE_INDEX_MAP_H

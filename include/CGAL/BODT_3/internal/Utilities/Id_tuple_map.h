@@ -1,0 +1,110 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_BODT_3_INTERNAL_UTILITIES_ID_TUPLE_MAP_H
+#define CGAL_BODT_3_INTERNAL_UTILITIES_ID_TUPLE_MAP_H
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace BODT_3 {
+
+/// A map from tuples of N vertex ids (edges, faces, cells) to values: open
+/// addressing with linear probing, entries stored inline. The flip pass looks
+/// such keys up several times per cell it tries; with `std::unordered_map`
+/// (a node per entry) those lookups took a tenth of the pass. Entries are only
+/// inserted or updated, never erased; the order of iteration is never used.
+template <std::size_t N, class Value>
+class Id_tuple_map
+{
+public:
+  using Key = std::array<int, N>;
+
+  std::size_t size() const { return size_; }
+
+  void clear()
+  {
+    for(Slot& s : slots_) s.used = false;
+    size_ = 0;
+  }
+
+  /// The value of `key`, or null.
+  const Value* find(const Key& key) const
+  {
+    if(slots_.empty()) return nullptr;
+    for(std::size_t s = slot(key);; s = (s + 1) & (slots_.size() - 1))
+    {
+      const Slot& x = slots_[s];
+      if(!x.used) return nullptr;
+      if(x.key == key) return &x.value;
+    }
+  }
+
+  /// The value of `key`, inserted as `initial` if absent; `inserted` tells which.
+  Value& find_or_insert(const Key& key, const Value& initial, bool& inserted)
+  {
+    if(2 * (size_ + 1) > slots_.size()) grow();
+    for(std::size_t s = slot(key);; s = (s + 1) & (slots_.size() - 1))
+    {
+      Slot& x = slots_[s];
+      if(x.used && x.key == key)
+      {
+        inserted = false;
+        return x.value;
+      }
+      if(!x.used)
+      {
+        x = Slot{key, initial, true};
+        ++size_;
+        inserted = true;
+        return x.value;
+      }
+    }
+  }
+
+  /// Sets the value of `key`.
+  void assign(const Key& key, const Value& value)
+  {
+    bool inserted;
+    find_or_insert(key, value, inserted) = value;
+  }
+
+private:
+  struct Slot
+  {
+    Key key;
+    Value value;
+    bool used = false;
+  };
+
+  std::size_t slot(const Key& key) const
+  {
+    std::uint64_t h = 0;
+    for(int x : key) h = (h ^ static_cast<std::uint32_t>(x)) * 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(h >> 32) & (slots_.size() - 1);
+  }
+
+  void grow()
+  {
+    std::vector<Slot> old;
+    old.swap(slots_);
+    slots_.resize(old.empty() ? 64 : 2 * old.size());
+    size_ = 0;
+    for(const Slot& x : old)
+      if(x.used)
+      {
+        bool inserted;
+        find_or_insert(x.key, x.value, inserted);
+      }
+  }
+
+  std::vector<Slot> slots_;   // a power of two, at most half full
+  std::size_t size_ = 0;
+};
+
+} // namespace BODT_3
+} // namespace CGAL
+
+#endif // CGAL_BODT_3_INTERNAL_UTILITIES_ID_TUPLE_MAP_H
