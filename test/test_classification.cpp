@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -119,7 +120,7 @@ TEST(Classification, BoxCornersEdgesFacesByTensorVoting)
   }
 }
 
-TEST(Classification, FeatureHintsWinAndInteriorOnlyFixesTheBoundary)
+TEST(Classification, FeatureHintsAddToTheGeometryAndInteriorOnlyFixesTheBoundary)
 {
   const int n = 2;
   const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
@@ -128,11 +129,22 @@ TEST(Classification, FeatureHintsWinAndInteriorOnlyFixesTheBoundary)
   BODT::Feature_hints hints;
   hints.feature_edges = {{0, 1}, {1, 2}};
   const auto classification = BODT::classify_vertices(s, hints, BODT::Classification_options());
-  EXPECT_FALSE(classification.used_tensor_voting);
+  EXPECT_TRUE(classification.used_tensor_voting);
   EXPECT_EQ(classification.kind[0], BODT::Vertex_kind::fixed);     // one feature edge: a corner
   EXPECT_EQ(classification.kind[1], BODT::Vertex_kind::feature);   // two: on the curve
+  EXPECT_EQ(std::set<int>(classification.curve_neighbors[1].begin(), classification.curve_neighbors[1].end()),
+            (std::set<int>{0, 2}));
   EXPECT_EQ(classification.kind[2], BODT::Vertex_kind::fixed);
-  EXPECT_EQ(classification.kind[3], BODT::Vertex_kind::surface);   // a box corner the hints do not mention
+  // The box's other edges and corners, which the hints do not mention, come from the geometry.
+  for(std::size_t v = 3; v < m.points.size(); ++v)
+  {
+    const int on = count_on_box(m, static_cast<int>(v), n);
+    const BODT::Vertex_kind expected = on == 0   ? BODT::Vertex_kind::interior
+                                       : on == 1 ? BODT::Vertex_kind::surface
+                                       : on == 2 ? BODT::Vertex_kind::feature
+                                                 : BODT::Vertex_kind::fixed;
+    EXPECT_EQ(classification.kind[v], expected) << "vertex " << v << " " << m.points[v];
+  }
 
   BODT::Classification_options interior_only;
   interior_only.move_boundary = false;
@@ -140,6 +152,119 @@ TEST(Classification, FeatureHintsWinAndInteriorOnlyFixesTheBoundary)
   for(std::size_t v = 0; v < m.points.size(); ++v)
     EXPECT_EQ(odt.kind[v], count_on_box(m, static_cast<int>(v), n) == 0 ? BODT::Vertex_kind::interior
                                                                         : BODT::Vertex_kind::fixed);
+}
+
+// A C3T3's dimensions come from the domain Mesh_3 meshed: they replace the geometry.
+TEST(Classification, DimensionsReplaceTheGeometry)
+{
+  const int n = 2;
+  const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
+  BODT::Feature_hints hints;
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    hints.dimension.push_back(count_on_box(m, static_cast<int>(v), n) == 0 ? 3 : 2);
+  const auto classification = BODT::classify_vertices(smoothing_mesh(m), hints, BODT::Classification_options());
+  EXPECT_FALSE(classification.used_tensor_voting);
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    EXPECT_EQ(classification.kind[v], hints.dimension[v] == 3 ? BODT::Vertex_kind::interior
+                                                              : BODT::Vertex_kind::surface);
+}
+
+namespace {
+
+// The kind a vertex must get from the number of planes (faces of the box, an
+// interface) it lies on: none inside, one on a face, two on an edge, three at a corner.
+BODT::Vertex_kind kind_from_planes(int planes)
+{
+  return planes == 0 ? BODT::Vertex_kind::interior
+         : planes == 1 ? BODT::Vertex_kind::surface
+         : planes == 2 ? BODT::Vertex_kind::feature
+                       : BODT::Vertex_kind::fixed;
+}
+
+// Checks that every feature vertex's curve neighbours, where given, lie on its line:
+// both share with it the grid coordinates on the planes it lies on.
+void expect_neighbours_on_the_line(const BODT::Tet_mesh& m, const BODT::Vertex_classification& c,
+                                   const std::function<int(int)>& planes_of)
+{
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+  {
+    if(c.kind[v] != BODT::Vertex_kind::feature || c.curve_neighbors[v][0] < 0) continue;
+    for(int w : c.curve_neighbors[v])
+    {
+      const auto d = m.points[w] - m.points[v];
+      EXPECT_EQ((d.x() == 0) + (d.y() == 0) + (d.z() == 0), 2) << "vertex " << v << ", neighbour " << w;
+      EXPECT_EQ(planes_of(w) >= 2, true) << "vertex " << v << ", neighbour " << w;
+    }
+  }
+}
+
+} // namespace
+
+// Issue 30: a cube in two subdomains, the outer boundary's triangles all with ref 1
+// and the interface's with ref 5, as Gmsh users label them. The refs replaced the
+// geometry: the cube's corners and edges were surface vertices, and moved off it.
+TEST(Classification, PatchesNeverHideASharpEdge)
+{
+  const int n = 4, mid = 2;
+  const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int k) { return k < mid ? 1 : 2; });
+  const BODT::Flat_mesh<K> s = smoothing_mesh(m);
+  BODT::Feature_hints hints;
+  for(const auto& t : m.tets)
+    for(int i = 0; i < 4; ++i)
+    {
+      const std::array<int, 3> f = {t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]};
+      int box = 0, on_mid = 0;
+      for(int a = 0; a < 3; ++a)
+      {
+        const double x0 = m.points[f[0]][a];
+        const bool same = x0 == m.points[f[1]][a] && x0 == m.points[f[2]][a];
+        box += same && (x0 == 0 || x0 == n);
+        on_mid += same && a == 2 && x0 == mid;
+      }
+      if(box || on_mid) hints.facet_patches.push_back({f, box ? 1 : 5});
+    }
+  const auto c = BODT::classify_vertices(s, hints, BODT::Classification_options());
+  auto planes = [&](int v) { return count_on_box(m, v, n) + (m.points[v].z() == mid ? 1 : 0); };
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    EXPECT_EQ(c.kind[v], kind_from_planes(planes(static_cast<int>(v)))) << "vertex " << v << " " << m.points[v];
+  expect_neighbours_on_the_line(m, c, planes);
+  // The rim of the interface on the cube's faces: a curve of both surfaces.
+  const int rim = bodt_test::grid_index(n, 0, 1, mid);
+  ASSERT_EQ(c.kind[rim], BODT::Vertex_kind::feature);
+  EXPECT_EQ(std::set<int>(c.curve_neighbors[rim].begin(), c.curve_neighbors[rim].end()),
+            (std::set<int>{bodt_test::grid_index(n, 0, 0, mid), bodt_test::grid_index(n, 0, 2, mid)}));
+}
+
+// A box inclusion in a box, no triangles: the inclusion's edges and corners lie on
+// an interface, off the outer boundary, where the sweep cannot vote; its edge
+// vertices move between their neighbours on the edge.
+TEST(Classification, EdgesAndCornersOfAnInclusionAreFound)
+{
+  const int n = 4;
+  auto inside = [](int i) { return i >= 1 && i < 3; };
+  const BODT::Tet_mesh m =
+      bodt_test::cube_grid(n, [&](int i, int j, int k) { return inside(i) && inside(j) && inside(k) ? 2 : 1; });
+  const auto c = BODT::classify_vertices(smoothing_mesh(m), BODT::Feature_hints(), BODT::Classification_options());
+  EXPECT_TRUE(c.used_tensor_voting);
+  auto planes = [&](int v) {
+    const auto& p = m.points[v];
+    const bool in = p.x() >= 1 && p.x() <= 3 && p.y() >= 1 && p.y() <= 3 && p.z() >= 1 && p.z() <= 3;
+    int inner = 0;
+    for(double x : {p.x(), p.y(), p.z()}) inner += in && (x == 1 || x == 3);
+    return count_on_box(m, v, n) + inner;
+  };
+  int inner_edge_vertices = 0;
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+  {
+    EXPECT_EQ(c.kind[v], kind_from_planes(planes(static_cast<int>(v)))) << "vertex " << v << " " << m.points[v];
+    if(count_on_box(m, static_cast<int>(v), n) == 0 && planes(static_cast<int>(v)) == 2)
+    {
+      ++inner_edge_vertices;
+      EXPECT_GE(c.curve_neighbors[v][0], 0) << "vertex " << v;
+    }
+  }
+  EXPECT_EQ(inner_edge_vertices, 12);
+  expect_neighbours_on_the_line(m, c, planes);
 }
 
 TEST(Classification, PinchedVertexIsFixed)

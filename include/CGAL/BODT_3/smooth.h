@@ -105,9 +105,9 @@ struct Constraint_counting_visitor
 } // namespace internal
 
 /// The pipeline on a mesh read from a file. Tetrahedra labelled 0 are outside the
-/// mesh (unless all are), but stay valid; `Edges`, `Corners`, `RequiredVertices`
-/// and triangle labels give the features, and tensor voting is used when none is
-/// given. Without `Ridges`, edges labelled 0 are not features when other edges
+/// mesh (unless all are), but stay valid; `Edges`, `Corners`, `RequiredVertices`,
+/// triangle labels and the geometry (tensor voting) together give the features
+/// (`classify_vertices`). Without `Ridges`, edges labelled 0 are not features when other edges
 /// are labelled (TetGen's `-e` lists every edge of the mesh, those on its segments
 /// with their marker, the others with 0). Embedded surfaces and cracks are kept
 /// (`Tet_mesh_constraints`). The mesh becomes a `Tet_mesh_c3t3` (tet_mesh_to_c3t3),

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -84,40 +85,22 @@ inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
   return false;
 }
 
-} // namespace internal
-
-/// Classifies every vertex of `mesh` (see `Vertex_kind`). The rules, in order:
-/// 1. A vertex of no mesh cell is fixed; so is every non-interior vertex when only
-///    interior vertices move.
-/// 2. For each subdomain around the vertex, the boundary of that subdomain's part
-///    of the star must be one closed cycle of triangles; otherwise (a non-manifold
-///    point) the vertex is fixed.
-/// 3. Inside one subdomain, with no boundary facet: interior, unless the hints say
-///    it lies on a feature.
-/// 4. With feature preservation on, feature edges are the hints' edges and the
-///    edges where facets of two or more surface patches meet (facets the hints do
-///    not label get the pair of subdomains they separate, so junctions of subdomains
-///    are features). A vertex on exactly two feature edges lies on a feature curve;
-///    on one, or three and more, or two that turn by more than 60 degrees, it is a
-///    corner. When the input has no feature
-///    information of its own (Mesh_3 dimensions, feature edges, corners, two or more
-///    patch labels), the other boundary vertices are classified by tensor voting (eq. 11).
-/// 5. Every other vertex is a surface vertex.
+// The surface facets of a mesh are those between a mesh cell and the outside or a
+// cell of another subdomain. Each has a patch: the hints' label of the facet (or
+// none) together with the pair of subdomains it separates, so that one label on two
+// surfaces (a file giving the outer boundary and an interface the same ref, or the
+// outer boundary on both sides of an interface) still makes two patches, and the
+// rim where they meet is a junction. Returns, per edge of a surface facet, the
+// patches of the facets around it (each interface facet seen from both its cells).
 template <class K>
-Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_hints& hints,
-                                        const Classification_options& opt)
+std::unordered_map<std::pair<int, int>, std::set<int>, Id_hash> edge_patches(const Flat_mesh<K>& mesh,
+                                                                             const Feature_hints& hints)
 {
-  const int nv = static_cast<int>(mesh.number_of_vertices());
-  Vertex_classification out;
-  out.kind.assign(nv, Vertex_kind::fixed);
-  out.curve_neighbors.assign(nv, {-1, -1});
-
-  // Patches of boundary and interface facets. A facet the hints do not label gets a
-  // label from the pair of subdomains it separates, so that interfaces count as patches.
-  std::unordered_map<std::array<int, 3>, int, internal::Id_hash> patch;
-  for(const auto& fp : hints.facet_patches) patch.emplace(internal::sorted(fp.first), fp.second);
-  std::set<int> patch_labels;   // labels the hints gave
-  std::unordered_map<std::pair<int, int>, std::set<int>, internal::Id_hash> edge_patches;
+  std::unordered_map<std::array<int, 3>, int, Id_hash> label;
+  for(const auto& fp : hints.facet_patches) label.emplace(sorted(fp.first), fp.second);
+  constexpr int unlabelled = (std::numeric_limits<int>::min)();
+  std::map<std::array<int, 3>, int> patch_of;   // (label, subdomain, subdomain) -> patch
+  std::unordered_map<std::pair<int, int>, std::set<int>, Id_hash> out;
   for(int c = 0; c < static_cast<int>(mesh.cells.size()); ++c)
   {
     if(!mesh.in_mesh[c]) continue;
@@ -126,38 +109,129 @@ Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_
       const int n = mesh.neighbor[4 * c + i];
       const bool outside = n < 0 || !mesh.in_mesh[n];
       if(!outside && mesh.subdomain[n] == mesh.subdomain[c]) continue;
-      const auto& o = internal::facet_opposite[i];
+      const auto& o = facet_opposite[i];
       const std::array<int, 3> f = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
-      const auto it = patch.find(internal::sorted(f));
-      int label;
-      if(it != patch.end())
-      {
-        label = it->second;
-        patch_labels.insert(label);
-      }
-      else
-      {
-        const int s0 = mesh.subdomain[c], s1 = outside ? 0 : mesh.subdomain[n];
-        label = -1 - (std::min(s0, s1) * 4099 + std::max(s0, s1));   // disjoint from file labels >= 0
-      }
-      for(int k = 0; k < 3; ++k) edge_patches[internal::edge_key(f[k], f[(k + 1) % 3])].insert(label);
+      const auto it = label.find(sorted(f));
+      const int s0 = mesh.subdomain[c], s1 = outside ? 0 : mesh.subdomain[n];
+      const std::array<int, 3> key = {it != label.end() ? it->second : unlabelled, (std::min)(s0, s1),
+                                      (std::max)(s0, s1)};
+      const int patch = patch_of.emplace(key, static_cast<int>(patch_of.size())).first->second;
+      for(int k = 0; k < 3; ++k) out[edge_key(f[k], f[(k + 1) % 3])].insert(patch);
     }
   }
+  return out;
+}
+
+// Calls `f(a, b)` for each surface facet through `v`, once (an interface facet from
+// the cell of the smaller subdomain), (v, a, b) oriented out of that cell; the
+// boundary facets come in the order of `Flat_mesh::gather_star`.
+template <class K, class F>
+void for_each_surface_facet(const Flat_mesh<K>& mesh, int v, const F& f)
+{
+  for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
+  {
+    const int c = mesh.incidences[k].cell;
+    if(!mesh.in_mesh[c]) continue;
+    for(int i = 0; i < 4; ++i)
+    {
+      const int n = mesh.neighbor[4 * c + i];
+      if(mesh.cells[c][i] == v || (n >= 0 && mesh.in_mesh[n] && mesh.subdomain[n] <= mesh.subdomain[c])) continue;
+      const auto& o = facet_opposite[i];
+      const int t[3] = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
+      for(int j = 0; j < 3; ++j)
+        if(t[j] == v) f(t[(j + 1) % 3], t[(j + 2) % 3]);
+    }
+  }
+}
+
+// The star tensor voting reads: the surface facets through `v`.
+template <class K>
+void gather_surface_star(const Flat_mesh<K>& mesh, int v, Vertex_star<K>& star)
+{
+  star.clear();
+  star.x0 = mesh.points[v];
+  for_each_surface_facet(mesh, v, [&](int a, int b) { star.boundary.push_back({mesh.points[a], mesh.points[b]}); });
+}
+
+// The neighbours along its edge of a vertex `v` that voted for one: among the
+// vertices of its surface facets that voted for an edge or a corner, the one most
+// nearly along the voted direction and the one most nearly against it, each within
+// about 25 degrees of it; {-1, -1} when either is missing.
+template <class K>
+std::array<int, 2> voted_edge_neighbors(const Flat_mesh<K>& mesh, const std::vector<Tensor_vote<K>>& vote, int v)
+{
+  const auto& d = vote[v].direction;
+  std::array<int, 2> best = {-1, -1};
+  std::array<double, 2> cosine = {0.9, 0.9};   // cos(25.8 degrees), as for a crossing in rule 5
+  for_each_surface_facet(mesh, v, [&](int a, int b) {
+    for(int w : {a, b})
+    {
+      if(vote[w].kind == Voted_kind::surface) continue;
+      const auto e = mesh.points[w] - mesh.points[v];
+      const double c = (e * d) / std::sqrt(e.squared_length() * d.squared_length());
+      for(int side = 0; side < 2; ++side)
+        if((side == 0 ? c : -c) > cosine[side])
+        {
+          cosine[side] = side == 0 ? c : -c;
+          best[side] = w;
+        }
+    }
+  });
+  if(best[0] < 0 || best[1] < 0) return {-1, -1};
+  return best;
+}
+
+} // namespace internal
+
+/// Classifies every vertex of `mesh` (see `Vertex_kind`). A vertex is a corner, or on
+/// a feature curve, if any source says so. The rules, in order:
+/// 1. A vertex of no mesh cell is fixed; so is every non-interior vertex when only
+///    interior vertices move.
+/// 2. For each subdomain around the vertex, the boundary of that subdomain's part
+///    of the star must be one closed cycle of triangles; otherwise (a non-manifold
+///    point) the vertex is fixed.
+/// 3. Inside one subdomain, with no boundary facet: interior, unless the hints say
+///    it lies on a feature.
+/// 4. With feature preservation on, feature edges are the hints' edges and the
+///    edges where facets of two or more surface patches meet (`edge_patches`: a
+///    patch is a facet's label and the pair of subdomains it separates, so interfaces
+///    and their rims on the boundary are features). A vertex on exactly two feature
+///    edges lies on a feature curve; on one, or three and more, or two that turn by
+///    more than 60 degrees, it is a corner; so is a vertex the hints call a corner.
+/// 5. The geometry, where the input has no dimensions of its own (a file, a
+///    `Triangulation_3`; a C3T3's dimensions come from the domain Mesh_3 meshed):
+///    tensor voting (eq. 11) over the boundary and interface facets around each
+///    vertex. A vote for a corner makes a corner. On a feature curve of rule 4, a
+///    vote for an edge across the curve (their directions more than about 25
+///    degrees apart) makes a corner: a sharp edge ends there. Elsewhere a vote for
+///    an edge makes a feature vertex that moves along the voted direction (the sweep
+///    votes again as the vertex moves); off the outer boundary (an edge of an
+///    interface) it moves along the chord between its two neighbours on the edge,
+///    the vertices of its facets that voted for an edge or a corner and lie most
+///    nearly along the voted direction on either side, and is fixed when there are no
+///    such two.
+/// 6. Every other vertex is a surface vertex.
+template <class K>
+Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_hints& hints,
+                                        const Classification_options& opt)
+{
+  using Vector = typename K::Vector_3;
+  const int nv = static_cast<int>(mesh.number_of_vertices());
+  Vertex_classification out;
+  out.kind.assign(nv, Vertex_kind::fixed);
+  out.curve_neighbors.assign(nv, {-1, -1});
 
   const bool hints_dims = std::any_of(hints.dimension.begin(), hints.dimension.end(),
                                       [](signed char d) { return d >= 0; });
-  const bool has_feature_info = hints_dims || !hints.feature_edges.empty() || !hints.corners.empty() ||
-                                patch_labels.size() >= 2;
-  out.used_tensor_voting = opt.preserve_features && opt.move_boundary && !has_feature_info;
+  out.used_tensor_voting = opt.preserve_features && opt.move_boundary && !hints_dims;
 
-  // Feature edges and the feature degree of each vertex. Junctions of subdomains
-  // count even when tensor voting finds the other features.
+  // Feature edges and the feature degree of each vertex.
   std::unordered_set<std::pair<int, int>, internal::Id_hash> feature_edges;
   if(opt.preserve_features)
   {
     for(const auto& e : hints.feature_edges)
       if(e[0] != e[1]) feature_edges.insert(internal::edge_key(e[0], e[1]));
-    for(const auto& ep : edge_patches)
+    for(const auto& ep : internal::edge_patches(mesh, hints))
       if(ep.second.size() >= 2) feature_edges.insert(ep.first);
   }
   std::vector<std::vector<int>> feature_nbrs(nv);
@@ -171,15 +245,23 @@ Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_
     for(int v : hints.corners)
       if(v >= 0 && v < nv) is_corner[v] = 1;
 
-  // Vertices are independent: classified in parallel (`mesh.threads`).
+  // Rule 5's votes, first for every vertex on a surface, since an interface vertex
+  // looks for its neighbours on the edge among the others' votes. Vertices are
+  // independent: classified in parallel (`mesh.threads`).
   struct Worker
   {
     Vertex_star<K> star;
     std::size_t non_manifold = 0;
   };
   Thread_workers<Worker> workers(mesh.threads);
+  std::vector<Tensor_vote<K>> vote(out.used_tensor_voting ? nv : 0, Tensor_vote<K>{Voted_kind::surface, Vector(0, 0, 0)});
+  if(out.used_tensor_voting)
+    workers.for_each(0, nv, [&](Worker& w, int v) {
+      internal::gather_surface_star(mesh, v, w.star);
+      if(!w.star.boundary.empty()) vote[v] = tensor_vote(w.star, opt.tensor_voting);
+    }, 256);
+
   workers.for_each(0, nv, [&](Worker& w, int v) {
-    Vertex_star<K>& star = w.star;
     // Subdomains around v, and the boundary of each one's part of the star.
     std::map<int, std::vector<std::array<int, 2>>> side_boundary;
     for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
@@ -214,29 +296,23 @@ Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_
     if(opt.preserve_features)
     {
       const std::size_t degree = feature_nbrs[v].size();
-      const bool voting = out.used_tensor_voting && !interior && mesh.boundary_begin[v + 1] > mesh.boundary_begin[v];
-      Tensor_vote<K> vote{Voted_kind::surface, typename K::Vector_3(0, 0, 0)};
-      if(voting)
-      {
-        mesh.gather_star(v, star);
-        vote = tensor_vote(star, opt.tensor_voting);
-      }
+      const Tensor_vote<K> voted = vote.empty() ? Tensor_vote<K>{Voted_kind::surface, Vector(0, 0, 0)} : vote[v];
       // Two feature edges make a curve point only if the curve goes on: a turn of
       // more than 60 degrees (or a crossing with a voted edge) is a corner.
       bool curve_point = false;
       if(degree == 2)
       {
         const auto u = mesh.points[feature_nbrs[v][0]] - mesh.points[v];
-        const auto w = mesh.points[feature_nbrs[v][1]] - mesh.points[v];
-        curve_point = u * w < -0.5 * std::sqrt(u.squared_length() * w.squared_length());
-        if(curve_point && vote.kind == Voted_kind::feature)
+        const auto x = mesh.points[feature_nbrs[v][1]] - mesh.points[v];
+        curve_point = u * x < -0.5 * std::sqrt(u.squared_length() * x.squared_length());
+        if(curve_point && voted.kind == Voted_kind::feature)
         {
-          const auto chord = w - u;
-          curve_point = std::abs(chord * vote.direction) >=
-                        0.9 * std::sqrt(chord.squared_length() * vote.direction.squared_length());
+          const auto chord = x - u;
+          curve_point = std::abs(chord * voted.direction) >=
+                        0.9 * std::sqrt(chord.squared_length() * voted.direction.squared_length());
         }
       }
-      if(is_corner[v] || dim == 0 || vote.kind == Voted_kind::corner || (degree > 0 && !curve_point))
+      if(is_corner[v] || dim == 0 || voted.kind == Voted_kind::corner || (degree > 0 && !curve_point))
         kind = Vertex_kind::fixed;
       else if(degree == 2)
       {
@@ -245,8 +321,17 @@ Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_
       }
       else if(dim == 1)
         kind = Vertex_kind::fixed;                               // a curve vertex whose curve is unknown
-      else if(vote.kind == Voted_kind::feature)
+      else if(voted.kind == Voted_kind::feature)
+      {
         kind = Vertex_kind::feature;
+        if(mesh.boundary_begin[v + 1] == mesh.boundary_begin[v])
+        {
+          // The sweep votes over the outer boundary only: an interface vertex needs
+          // its neighbours on the edge.
+          out.curve_neighbors[v] = internal::voted_edge_neighbors(mesh, vote, v);
+          if(out.curve_neighbors[v][0] < 0) kind = Vertex_kind::fixed;
+        }
+      }
     }
     out.kind[v] = kind;
   }, 256);
