@@ -703,3 +703,75 @@ TEST(C3t3_conversion, SharedMeshes)
   }
   EXPECT_GT(converted, 0u);
 }
+
+// Issue 30: every refusal of the conversion names the file the mesh was read from,
+// in every format, through `smooth` as through `read_mesh_into_c3t3` (TetGen: the
+// `.ele` file, which holds the tetrahedra). The readers accept these files: only
+// the conversion can refuse them. A mesh made in code has no file, and its message
+// is the refusal alone.
+TEST(C3t3_conversion, EveryRefusalNamesTheFile)
+{
+  Tet_mesh same_side;
+  same_side.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(0.2, 0.2, 2)};
+  same_side.vertex_refs.assign(5, 0);
+  same_side.tets = {{0, 1, 2, 3}, {0, 1, 2, 4}};
+  same_side.tet_labels = {1, 1};
+  // On the cube's face z = 0 the tetrahedra have the diagonal (1 4), not (2 3).
+  Tet_mesh not_an_edge = bodt_test::cube_grid(1, [](int, int, int) { return 1; });
+  not_an_edge.edges = {{1, 2}};
+  not_an_edge.edge_labels = {1};
+  struct Case
+  {
+    std::string name;
+    Tet_mesh mesh;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {"edge", bodt_test::touching_grids(1, {1, 1, 0}), "the boundary is not manifold at edge"},
+      {"vertex", bodt_test::touching_grids(1, {1, 1, 1}), "the mesh is not manifold at vertex"},
+      {"same_side", same_side, "lie on the same side of their common face"},
+      {"not_an_edge", not_an_edge, "Edges entry 1 (2 3) is not an edge of the tetrahedra"}};
+  for(const Case& c : cases)
+  {
+    // Made in code: no file to name.
+    Tet_mesh made = c.mesh;
+    try
+    {
+      BODT::smooth(made, BODT::Smoothing_options());
+      ADD_FAILURE() << c.name << " was smoothed";
+    }
+    catch(const Mesh_io_error& e)
+    {
+      EXPECT_EQ(e.file(), "");
+      EXPECT_EQ(std::string(e.what()), e.message());
+      EXPECT_NE(e.message().find(c.message), std::string::npos) << e.what();
+    }
+    for(const std::string extension : {".mesh", ".meshb", ".msh", ".vtu", ".vtk", ".node"})
+    {
+      const std::string path = (bodt_test::tmp_dir() / (c.name + extension)).string();
+      const std::string named = extension == ".node" ? (bodt_test::tmp_dir() / (c.name + ".ele")).string() : path;
+      SCOPED_TRACE(path);
+      BODT::IO::write_mesh(path, c.mesh);
+      std::ostringstream warnings;
+      Tet_mesh read = BODT::IO::read_mesh(path, warnings);
+      auto expect_named = [&](const auto& run) {
+        try
+        {
+          run();
+          ADD_FAILURE() << "accepted";
+        }
+        catch(const Mesh_io_error& e)
+        {
+          EXPECT_EQ(e.file(), named);
+          EXPECT_EQ(std::string(e.what()), named + ": " + e.message());
+          EXPECT_NE(e.message().find(c.message), std::string::npos) << e.what();
+        }
+      };
+      expect_named([&] { BODT::smooth(read, BODT::Smoothing_options()); });
+      expect_named([&] {
+        C3t3 c3t3;
+        BODT::read_mesh_into_c3t3(path, c3t3, warnings);
+      });
+    }
+  }
+}

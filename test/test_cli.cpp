@@ -411,3 +411,20 @@ TEST(Progress, ShowsTotalAndTimeLeftOnlyOnLongRuns)
   EXPECT_NE(progress_text(false, 20, 6.2, 1.5, 3).find("about 2 s left"), std::string::npos);
   EXPECT_NE(progress_text(false, 0, 0, 1.5, 1).find("until convergence, at most 3000"), std::string::npos);
 }
+
+// Issue 30: two grids that share only an edge, or only a vertex, cannot form a
+// triangulation; the refusal named no file ("error: : the boundary ...").
+TEST(Cli, RefusalsOfTheConversionNameTheFile)
+{
+  const fs::path dir = tmp_dir();
+  for(const auto& [shift, words] : {std::make_pair(std::array<int, 3>{2, 2, 0}, "the boundary is not manifold at edge"),
+                                    std::make_pair(std::array<int, 3>{2, 2, 2}, "the mesh is not manifold at vertex")})
+  {
+    const fs::path in = dir / "two_grids.mesh";
+    BODT::IO::write_medit(in.string(), touching_grids(2, shift));
+    std::string out;
+    EXPECT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh"), out, dir), 1) << out;
+    EXPECT_NE(out.find("bodt smooth: error: " + in.string() + ": " + words), std::string::npos) << out;
+    EXPECT_FALSE(fs::exists(dir / "out.mesh"));
+  }
+}

@@ -154,6 +154,33 @@ CGAL::BODT_3::Tet_mesh cube_grid(int n, Label label)
   return m;
 }
 
+/// Two `cube_grid(n, ...)` grids, the second moved by `shift` (whole cubes), sharing
+/// the points they have in common: with a shift of (n, n, 0) they share an edge of
+/// the box, with (n, n, n) a corner, and no triangulation can hold them.
+inline CGAL::BODT_3::Tet_mesh touching_grids(int n, const std::array<int, 3>& shift)
+{
+  CGAL::BODT_3::Tet_mesh m = cube_grid(n, [](int, int, int) { return 1; });
+  const CGAL::BODT_3::Tet_mesh second = m;
+  std::vector<int> number;
+  for(const auto& p : second.points)
+  {
+    const CGAL::BODT_3::Tet_mesh::Point moved(p.x() + shift[0], p.y() + shift[1], p.z() + shift[2]);
+    const auto at = std::find(m.points.begin(), m.points.end(), moved);
+    number.push_back(static_cast<int>(at - m.points.begin()));
+    if(at == m.points.end())
+    {
+      m.points.push_back(moved);
+      m.vertex_refs.push_back(0);
+    }
+  }
+  for(const auto& t : second.tets)
+  {
+    m.tets.push_back({number[t[0]], number[t[1]], number[t[2]], number[t[3]]});
+    m.tet_labels.push_back(1);
+  }
+  return m;
+}
+
 } // namespace bodt_test
 
 #endif // BODT_TEST_SUPPORT_H

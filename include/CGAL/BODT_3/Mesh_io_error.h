@@ -10,8 +10,9 @@ namespace CGAL {
 namespace BODT_3 {
 
 /// Thrown for any unreadable or invalid mesh file. `what()` reads
-/// "FILE:LINE: MESSAGE" (or "FILE: MESSAGE" when no line applies), the form
-/// compilers use, so that editors and terminals can jump to the place.
+/// "FILE:LINE: MESSAGE" (or "FILE: MESSAGE" when no line applies, "MESSAGE" for a
+/// mesh that came from no file), the form compilers use, so that editors and
+/// terminals can jump to the place.
 class Mesh_io_error : public std::runtime_error
 {
 public:
@@ -26,6 +27,7 @@ public:
 private:
   static std::string format(const std::string& file, long line, const std::string& message)
   {
+    if(file.empty()) return message;
     return line > 0 ? file + ":" + std::to_string(line) + ": " + message : file + ": " + message;
   }
 

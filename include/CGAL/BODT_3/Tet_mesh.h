@@ -6,6 +6,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -31,6 +32,10 @@ struct Tet_mesh
   std::vector<int> corners;                     // vertex indices
   std::vector<int> required_vertices;           // vertex indices
   std::vector<int> ridges;                      // indices into `edges`
+  /// The file the mesh was read from (the readers set it; empty for a mesh made in
+  /// code): the refusals of later steps, such as the conversion into a
+  /// triangulation in `smooth`, name it as the readers' own refusals do.
+  std::string source;
 
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_tets() const { return tets.size(); }

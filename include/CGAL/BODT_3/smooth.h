@@ -113,7 +113,8 @@ struct Constraint_counting_visitor
 /// (`Tet_mesh_constraints`). The mesh becomes a `Tet_mesh_c3t3` (tet_mesh_to_c3t3),
 /// goes through the same pipeline, and comes back with `update_tet_mesh`. Its
 /// infinite cells only close the mesh, so its boundary need not stay convex where
-/// it is. Throws `Mesh_io_error` for a mesh no triangulation can hold.
+/// it is. Throws `Mesh_io_error` naming `tm.source` (the file it was read from) for
+/// a mesh no triangulation can hold.
 template <class Visitor = Null_smoothing_visitor>
 Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
@@ -154,7 +155,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   std::vector<Tet_mesh_c3t3::Vertex_handle> handles;
   // The complex is built with the working labels; the file's come back at the end.
   if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
-  tet_mesh_to_c3t3(tm, c3t3, std::string(), &handles, &*faces);
+  tet_mesh_to_c3t3(tm, c3t3, tm.source, &handles, &*faces);
   faces.reset();
   if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
   internal::add_constraints_to_complex(tm, constraints, handles, c3t3);

@@ -13,11 +13,13 @@ namespace CGAL {
 namespace BODT_3 {
 
 /// Reads a mesh file (see `IO::read_mesh`) into `c3t3` with `tet_mesh_to_c3t3`.
-/// Throws `Mesh_io_error`.
+/// Throws `Mesh_io_error` naming the file read (for TetGen, the `.ele` file when
+/// the tetrahedra cannot form a triangulation).
 template <class C3T3>
 void read_mesh_into_c3t3(const std::string& path, C3T3& c3t3, std::ostream& warnings = std::cerr)
 {
-  tet_mesh_to_c3t3(IO::read_mesh(path, warnings), c3t3, path);
+  const Tet_mesh mesh = IO::read_mesh(path, warnings);
+  tet_mesh_to_c3t3(mesh, c3t3, mesh.source);
 }
 
 } // namespace BODT_3

@@ -45,9 +45,9 @@ inline std::string tet_to_string(const std::array<int, 4>& t)
 
 } // namespace internal
 
-/// Checks that a mesh just read is a valid tetrahedral mesh, and makes its
-/// orientation positive. Throws `Mesh_io_error` naming the file and line of the
-/// first offending entity. Checked: finite coordinates, indices in range, no
+/// Checks that a mesh just read is a valid tetrahedral mesh, makes its orientation
+/// positive, and records `src.file` as `mesh.source`. Throws `Mesh_io_error` naming
+/// the file and line of the first offending entity. Checked: finite coordinates, indices in range, no
 /// tetrahedron using a vertex twice, no repeated tetrahedron, no face shared by
 /// three or more tetrahedra, no flat tetrahedron (whatever its label: label 0 cells
 /// close a mesh and must stay valid too), one orientation for all tetrahedra. When
@@ -57,6 +57,7 @@ inline std::string tet_to_string(const std::array<int, 4>& t)
 inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::ostream& warnings, int threads = 1)
 {
   const std::string& file = src.file;
+  mesh.source = file;
   auto vline = [&](std::size_t i) { return i < src.vertex_lines.size() ? src.vertex_lines[i] : 0L; };
 
   // The quality measures and the moves multiply up to six coordinate differences
