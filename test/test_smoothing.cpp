@@ -449,6 +449,9 @@ TEST(Volume, FarVertexMeshFromFuzzingKeepsItsMeasuredVolume)
   const auto before = BODT::mesh_quality(m);
   BODT::Smoothing_options opt;
   opt.max_iteration_number = 3;
+  // Tensor voting (read since issue 30 whatever the triangle labels) makes ten of its
+  // twelve vertices corners, and then nothing moves and nothing flips.
+  opt.preserve_features = false;
   const auto r = BODT::smooth(m, opt);
   EXPECT_GT(r.topology.total(), 0u) << "no flip: the test lost its point";
   const auto after = BODT::mesh_quality(m);
