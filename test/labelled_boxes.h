@@ -21,7 +21,8 @@ namespace bodt_test {
 
 enum class Outline { box, l_shape };                          // the outer boundary
 enum class Parts { one, two_halves, inclusion };              // the subdomains
-enum class Refs { none, one_for_all, one_per_face, one_per_subdomain_pair };   // the triangles' labels
+// The triangles' labels; with `none`, only an embedded surface's triangles are listed (ref 7).
+enum class Refs { none, one_for_all, one_per_face, one_per_subdomain_pair };
 enum class Embedded { none, through, inside, from_boundary }; // an embedded surface on the mid plane
 
 struct Labelled_box_case
@@ -77,7 +78,8 @@ struct Labelled_box
 
 /// The case's mesh: an n x n x n grid of cubes, each cut into six
 /// tetrahedra; the L-shape leaves out the cubes with i, j >= n / 2. The inclusion is
-/// the cubes in [2, 4)^3 (subdomain 2 inside subdomain 1), the halves split at
+/// the cubes in [2, 4)^3, subdomain 2 inside subdomain 1 (in the L-shape it reaches
+/// the outline's inner edge, where its interface meets the boundary); the halves split at
 /// k = n / 2, as does the embedded surface (triangles between tetrahedra of one
 /// label): all of the plane, the part with i and j in [1, n - 1], or the part with
 /// i <= n / 2 (on the boundary at x = 0, y = 0 and y = n, ending inside). Every
