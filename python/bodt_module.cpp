@@ -161,11 +161,11 @@ py::tuple smooth_arrays(const Real_array& points, const Index_array& tets, const
 
   // The checks the file readers make; "mesh" stands for the file name in messages.
   std::ostringstream warnings;
-  BODT::Tet_mesh_source source;
+  BODT::internal::Tet_mesh_source source;
   source.file = "mesh";
   try
   {
-    BODT::check_and_orient(mesh, source, warnings);
+    BODT::internal::check_and_orient(mesh, source, warnings);
   }
   catch(const BODT::Mesh_io_error& e)
   {

@@ -25,9 +25,9 @@ namespace BODT = CGAL::BODT_3;
 
 namespace {
 
-BODT::Flat_mesh<K> smoothing_mesh(const BODT::Tet_mesh& m)
+BODT::internal::Flat_mesh<K> smoothing_mesh(const BODT::Tet_mesh& m)
 {
-  BODT::Flat_mesh<K> s;
+  BODT::internal::Flat_mesh<K> s;
   s.points = m.points;
   s.cells = m.tets;
   s.in_mesh.assign(m.tets.size(), 1);
@@ -46,9 +46,9 @@ int count_on_box(const BODT::Tet_mesh& m, int v, int n)
 
 // The boundary star of x0 = origin on the plane z = 0 (ring counterclockwise
 // seen from above) bent along the x axis by `fold` degrees: a straight edge.
-BODT::Vertex_star<K> folded_star(double fold_deg, int fan_left, int fan_right)
+BODT::internal::Vertex_star<K> folded_star(double fold_deg, int fan_left, int fan_right)
 {
-  BODT::Vertex_star<K> star;
+  BODT::internal::Vertex_star<K> star;
   star.x0 = Point(0, 0, 0);
   const double f = fold_deg * CGAL_PI / 180;
   std::vector<Point> ring;
@@ -72,16 +72,16 @@ BODT::Vertex_star<K> folded_star(double fold_deg, int fan_left, int fan_right)
 
 TEST(TensorVoting, FlatStarIsSurface)
 {
-  const auto vote = BODT::tensor_vote(folded_star(0, 3, 5), BODT::Tensor_voting_options());
-  EXPECT_EQ(vote.kind, BODT::Voted_kind::surface);
+  const auto vote = BODT::internal::tensor_vote(folded_star(0, 3, 5), BODT::Tensor_voting_options());
+  EXPECT_EQ(vote.kind, BODT::internal::Voted_kind::surface);
 }
 
 TEST(TensorVoting, SharpEdgeIsFeatureAlongTheEdge)
 {
   for(double fold : {30.0, 60.0, 90.0, 120.0})
   {
-    const auto vote = BODT::tensor_vote(folded_star(fold, 2, 7), BODT::Tensor_voting_options());
-    EXPECT_EQ(vote.kind, BODT::Voted_kind::feature) << fold;
+    const auto vote = BODT::internal::tensor_vote(folded_star(fold, 2, 7), BODT::Tensor_voting_options());
+    EXPECT_EQ(vote.kind, BODT::internal::Voted_kind::feature) << fold;
     EXPECT_NEAR(std::abs(vote.direction.x()), 1.0, 1e-12) << fold;
   }
 }
@@ -95,9 +95,9 @@ TEST(TensorVoting, AngleWeightsMakeTheRatioDependOnTheDihedralAngleOnly)
     {
       const double expected = std::pow(std::tan(fold * CGAL_PI / 360), 2);
       opt.edge_ratio = expected * 0.999;
-      EXPECT_EQ(BODT::tensor_vote(folded_star(fold, fans.first, fans.second), opt).kind, BODT::Voted_kind::feature);
+      EXPECT_EQ(BODT::internal::tensor_vote(folded_star(fold, fans.first, fans.second), opt).kind, BODT::internal::Voted_kind::feature);
       opt.edge_ratio = expected * 1.001;
-      EXPECT_EQ(BODT::tensor_vote(folded_star(fold, fans.first, fans.second), opt).kind, BODT::Voted_kind::surface);
+      EXPECT_EQ(BODT::internal::tensor_vote(folded_star(fold, fans.first, fans.second), opt).kind, BODT::internal::Voted_kind::surface);
     }
 }
 
@@ -106,15 +106,15 @@ TEST(Classification, BoxCornersEdgesFacesByTensorVoting)
   const int n = 3;
   const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
   const auto s = smoothing_mesh(m);
-  const auto classification = BODT::classify_vertices(s, BODT::Feature_hints(), BODT::Classification_options());
+  const auto classification = BODT::internal::classify_vertices(s, BODT::internal::Feature_hints(), BODT::internal::Classification_options());
   EXPECT_TRUE(classification.used_tensor_voting);
   for(std::size_t v = 0; v < m.points.size(); ++v)
   {
     const int on = count_on_box(m, static_cast<int>(v), n);
-    const BODT::Vertex_kind expected = on == 0   ? BODT::Vertex_kind::interior
-                                       : on == 1 ? BODT::Vertex_kind::surface
-                                       : on == 2 ? BODT::Vertex_kind::feature
-                                                 : BODT::Vertex_kind::fixed;
+    const BODT::internal::Vertex_kind expected = on == 0   ? BODT::internal::Vertex_kind::interior
+                                       : on == 1 ? BODT::internal::Vertex_kind::surface
+                                       : on == 2 ? BODT::internal::Vertex_kind::feature
+                                                 : BODT::internal::Vertex_kind::fixed;
     EXPECT_EQ(classification.kind[v], expected) << "vertex " << v << " " << m.points[v];
   }
 }
@@ -125,21 +125,21 @@ TEST(Classification, FeatureHintsWinAndInteriorOnlyFixesTheBoundary)
   const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
   const auto s = smoothing_mesh(m);
   // One feature edge chain along the bottom front edge: (0,0,0)-(1,0,0)-(2,0,0).
-  BODT::Feature_hints hints;
+  BODT::internal::Feature_hints hints;
   hints.feature_edges = {{0, 1}, {1, 2}};
-  const auto classification = BODT::classify_vertices(s, hints, BODT::Classification_options());
+  const auto classification = BODT::internal::classify_vertices(s, hints, BODT::internal::Classification_options());
   EXPECT_FALSE(classification.used_tensor_voting);
-  EXPECT_EQ(classification.kind[0], BODT::Vertex_kind::fixed);     // one feature edge: a corner
-  EXPECT_EQ(classification.kind[1], BODT::Vertex_kind::feature);   // two: on the curve
-  EXPECT_EQ(classification.kind[2], BODT::Vertex_kind::fixed);
-  EXPECT_EQ(classification.kind[3], BODT::Vertex_kind::surface);   // a box corner the hints do not mention
+  EXPECT_EQ(classification.kind[0], BODT::internal::Vertex_kind::fixed);     // one feature edge: a corner
+  EXPECT_EQ(classification.kind[1], BODT::internal::Vertex_kind::feature);   // two: on the curve
+  EXPECT_EQ(classification.kind[2], BODT::internal::Vertex_kind::fixed);
+  EXPECT_EQ(classification.kind[3], BODT::internal::Vertex_kind::surface);   // a box corner the hints do not mention
 
-  BODT::Classification_options interior_only;
+  BODT::internal::Classification_options interior_only;
   interior_only.move_boundary = false;
-  const auto odt = BODT::classify_vertices(s, BODT::Feature_hints(), interior_only);
+  const auto odt = BODT::internal::classify_vertices(s, BODT::internal::Feature_hints(), interior_only);
   for(std::size_t v = 0; v < m.points.size(); ++v)
-    EXPECT_EQ(odt.kind[v], count_on_box(m, static_cast<int>(v), n) == 0 ? BODT::Vertex_kind::interior
-                                                                        : BODT::Vertex_kind::fixed);
+    EXPECT_EQ(odt.kind[v], count_on_box(m, static_cast<int>(v), n) == 0 ? BODT::internal::Vertex_kind::interior
+                                                                        : BODT::internal::Vertex_kind::fixed);
 }
 
 TEST(Classification, PinchedVertexIsFixed)
@@ -147,7 +147,7 @@ TEST(Classification, PinchedVertexIsFixed)
   // Two single cubes of tetrahedra sharing only the vertex (1,1,1).
   BODT::Tet_mesh m = bodt_test::cube_grid(2, [](int i, int j, int k) { return (i == j && j == k) ? 1 : 0; });
   const auto s = [&] {
-    BODT::Flat_mesh<K> sm;
+    BODT::internal::Flat_mesh<K> sm;
     sm.points = m.points;
     sm.cells = m.tets;
     for(int l : m.tet_labels) sm.in_mesh.push_back(l != 0);
@@ -155,9 +155,9 @@ TEST(Classification, PinchedVertexIsFixed)
     sm.build_incidences();
     return sm;
   }();
-  const auto classification = BODT::classify_vertices(s, BODT::Feature_hints(), BODT::Classification_options());
+  const auto classification = BODT::internal::classify_vertices(s, BODT::internal::Feature_hints(), BODT::internal::Classification_options());
   const int centre = (1 * 3 + 1) * 3 + 1;
-  EXPECT_EQ(classification.kind[centre], BODT::Vertex_kind::fixed);
+  EXPECT_EQ(classification.kind[centre], BODT::internal::Vertex_kind::fixed);
   EXPECT_EQ(classification.non_manifold, 1u);
 }
 

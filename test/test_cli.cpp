@@ -183,7 +183,7 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_GT(moved, 0u);
   for(const char* key : {"flips_2_3", "flips_3_2", "edge_removals", "multi_face_removals", "boundary_flips"})
     EXPECT_TRUE(r.at("topology").contains(key)) << key;
-  for(const char* key : {"spade_splits", "cap_splits", "sliver_splits", "undone", "vertices_added"})
+  for(const char* key : {"spade_splits", "wedge_splits", "cap_splits", "sliver_splits", "undone", "vertices_added"})
     EXPECT_TRUE(r.at("insertion").contains(key)) << key;
   for(const char* side : {"before", "after"})
   {

@@ -68,6 +68,7 @@ inline void to_json(nlohmann::json& j, const Topology_stats& s)
 inline void to_json(nlohmann::json& j, const Insertion_stats& s)
 {
   j = nlohmann::json{{"spade_splits", s.spade_splits},
+                     {"wedge_splits", s.wedge_splits},
                      {"cap_splits", s.cap_splits},
                      {"sliver_splits", s.sliver_splits},
                      {"undone", s.undone},

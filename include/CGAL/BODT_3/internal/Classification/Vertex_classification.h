@@ -19,6 +19,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// How a vertex may move.
 enum class Vertex_kind : unsigned char
@@ -62,7 +63,6 @@ struct Vertex_classification
   std::size_t count(Vertex_kind k) const { return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), k)); }
 };
 
-namespace internal {
 
 // Whether oriented facets (x0, a, b) around x0 form exactly one closed cycle.
 inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
@@ -84,7 +84,6 @@ inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
   return false;
 }
 
-} // namespace internal
 
 /// Classifies every vertex of `mesh` (see `Vertex_kind`). The rules, in order:
 /// 1. A vertex of no mesh cell is fixed; so is every non-interior vertex when only
@@ -254,6 +253,7 @@ Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_
   return out;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 
