@@ -5,8 +5,9 @@
 // entry point as `bodt smooth` (CGAL::BODT_3::smooth on a Tet_mesh), NumPy arrays
 // and the JSON report out. bodt/__init__.py adds meshio meshes and the dict.
 
+#include "report/json_report.h"
+
 #include <CGAL/BODT_3/IO/check_tet_mesh.h>
-#include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>

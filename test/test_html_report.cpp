@@ -3,7 +3,8 @@
 // headless Chromium renders it with both histograms overlaid on one axis: grey
 // bars (before) and blue bars (after) over the same degrees, and a single sliver
 // below 10 degrees visible as a bar.
-#include <CGAL/BODT_3/IO/html_report.h>
+#include "report/html_report.h"
+
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/mesh_quality.h>

@@ -3,9 +3,9 @@
 #include "cli/commands.h"
 #include "cli/outputs.h"
 #include "cli/progress.h"
+#include "report/html_report.h"
+#include "report/json_report.h"
 
-#include <CGAL/BODT_3/IO/html_report.h>
-#include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/Return_code.h>
 #include <CGAL/BODT_3/mesh_quality.h>

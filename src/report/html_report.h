@@ -1,9 +1,10 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_BODT_3_IO_HTML_REPORT_H
-#define CGAL_BODT_3_IO_HTML_REPORT_H
+#ifndef BODT_REPORT_HTML_REPORT_H
+#define BODT_REPORT_HTML_REPORT_H
 
-#include <CGAL/BODT_3/IO/svg_histogram.h>
+#include "report/svg_histogram.h"
+
 #include <CGAL/BODT_3/mesh_quality.h>
 
 #include <cstdio>
@@ -171,4 +172,4 @@ inline std::string html_report(const std::string& title, const Quality_report& b
 } // namespace BODT_3
 } // namespace CGAL
 
-#endif // CGAL_BODT_3_IO_HTML_REPORT_H
+#endif // BODT_REPORT_HTML_REPORT_H

@@ -1,12 +1,14 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_BODT_3_IO_JSON_REPORT_H
-#define CGAL_BODT_3_IO_JSON_REPORT_H
+#ifndef BODT_REPORT_JSON_REPORT_H
+#define BODT_REPORT_JSON_REPORT_H
 
 // JSON for the quality and smoothing records, built with nlohmann::json (Debian's
 // nlohmann-json3-dev), which escapes every string and writes a value that is not
-// finite (NaN, infinity) as null: the output is always valid JSON. Only this header
-// needs the library; the rest of the package does not.
+// finite (NaN, infinity) as null: the output is always valid JSON. It belongs to the
+// tools (bodt, bodt-compare, the Python module), not to the header-only package; its
+// functions stay in namespace CGAL::BODT_3, where nlohmann finds them by
+// argument-dependent lookup on the package's types.
 
 #include <CGAL/BODT_3/Return_code.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
@@ -189,4 +191,4 @@ inline nlohmann::json smoothing_report(const Smoothing_options& options, const S
 } // namespace BODT_3
 } // namespace CGAL
 
-#endif // CGAL_BODT_3_IO_JSON_REPORT_H
+#endif // BODT_REPORT_JSON_REPORT_H
