@@ -10,6 +10,8 @@
 // functions stay in namespace CGAL::BODT_3, where nlohmann finds them by
 // argument-dependent lookup on the package's types.
 
+#include "cli/feature_angles.h"
+
 #include <CGAL/BODT_3/Return_code.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -156,6 +158,8 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"tensor_voting",
                       {{"edge_ratio", o.tensor_voting.edge_ratio},
                        {"corner_ratio", o.tensor_voting.corner_ratio},
+                       {"feature_angle_deg", bodt_cli::angle_of_edge_ratio(o.tensor_voting.edge_ratio)},
+                       {"corner_angle_deg", bodt_cli::angle_of_corner_ratio(o.tensor_voting.corner_ratio)},
                        {"angle_weighted", o.tensor_voting.angle_weighted}}}};
 }
 
