@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up and builds the command-line tool, then smooths a real third-party mesh
 # (CGAL's sphere.mesh, from Debian's libcgal-demo) and prints its quality before
-# and after, with a JSON report and an HTML page next to the output.
+# and after, with a JSON report and an HTML page (pictures of the mesh before and
+# after) next to the output.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/scripts/setup.sh" bodt

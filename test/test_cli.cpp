@@ -64,7 +64,7 @@ TEST(Cli, VersionAndHelp)
   ASSERT_EQ(run_bodt("smooth --help", out), 0);
   for(const char* option : {"--method", "--no-flips", "--no-insertion", "--max-insertions", "--format", "--quiet",
                             "--report", "--html", "--iterations", "--convergence", "--feature-angle", "--corner-angle",
-                            "--json"})
+                            "--cut", "--json"})
     EXPECT_NE(out.find(option), std::string::npos) << option;
   EXPECT_EQ(run_bodt("", out), 2);
   EXPECT_EQ(run_bodt("smooth", out), 2);
@@ -605,7 +605,7 @@ TEST(FeatureAngles, OptionsChangeTheClassification)
               bodt_cli::corner_ratio_of_angle(40), 1e-15);
 }
 
-// Bad angles are refused before any work with exit status 2 and a
+// Bad angles and planes are refused before any work with exit status 2 and a
 // message naming the option; options that cannot act are said to be unused.
 TEST(FeatureAngles, BadValuesAreRefusedAndUnusedOnesReported)
 {
@@ -621,15 +621,21 @@ TEST(FeatureAngles, BadValuesAreRefusedAndUnusedOnesReported)
       {"--feature-angle sharp", "--feature-angle"},
       {"--corner-angle -10", "--corner-angle"},
       {"--feature-angle 30 --no-features", "--no-features"},
+      {"--cut z=1", "--html"},
+      {"--html " + q(dir / "p.html") + " --cut 1,2", "not a plane"},
+      {"--html " + q(dir / "p.html") + " --cut 0,0,0,0,0,0", "must not be zero"},
+      {"--html " + q(dir / "p.html") + " --cut z=100", "misses the mesh"},
   };
   // What an earlier run of this test wrote.
   fs::remove(dir / "out.mesh");
+  fs::remove(dir / "p.html");
   for(const Case& c : cases)
   {
     std::string out;
     EXPECT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " " + c.args, out, dir), 2) << c.args;
     EXPECT_NE(out.find(c.message), std::string::npos) << c.args << "\n" << out;
     EXPECT_FALSE(fs::exists(dir / "out.mesh")) << c.args;
+    EXPECT_FALSE(fs::exists(dir / "p.html")) << c.args;
   }
   // A mesh with feature edges of its own does not vote: the angle is said to be unused.
   BODT::Tet_mesh edged = test_mesh();

@@ -6,6 +6,7 @@
 #include "cli/progress.h"
 #include "report/html_report.h"
 #include "report/json_report.h"
+#include "report/mesh_pictures.h"
 
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/Return_code.h>
@@ -17,7 +18,9 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 
 namespace bodt_cli {
 
@@ -27,7 +30,7 @@ namespace {
 
 struct Smooth_options
 {
-  std::string input, output, format, report, html, method = "bodt";
+  std::string input, output, format, report, html, cut, method = "bodt";
   BODT::Smoothing_options smoothing;
   bool no_features = false, no_guard = false, no_flips = false, no_insertion = false, quiet = false, json = false;
   bool no_largest_angle_phase = false;
@@ -51,6 +54,19 @@ std::string check_feature_angle(const std::string& text)
   const double x = std::strtod(text.c_str(), &end);
   if(text.empty() || *end != '\0' || !(x > 0 && x <= 90)) return "an angle in degrees above 0 and at most 90";
   return std::string();
+}
+
+std::string check_cut_plane(const std::string& text)
+{
+  try
+  {
+    bodt_report::parse_cut_plane(text);
+    return std::string();
+  }
+  catch(const std::invalid_argument& e)
+  {
+    return e.what();
+  }
 }
 
 // How the run found features, for the page.
@@ -115,6 +131,8 @@ int run_smooth(Smooth_options o)
     throw Usage_error("--feature-angle and --corner-angle say how features are found; --no-features keeps none");
   if(o.feature_angle_given) opt.tensor_voting.edge_ratio = edge_ratio_of_angle(o.feature_angle);
   if(o.corner_angle_given) opt.tensor_voting.corner_ratio = corner_ratio_of_angle(o.corner_angle);
+  std::optional<bodt_report::Cut_plane> cut;
+  if(!o.cut.empty()) cut = bodt_report::parse_cut_plane(o.cut);
 
   // Everything that can be refused is refused before the work starts.
   check_input_path(o.input);
@@ -141,6 +159,11 @@ int run_smooth(Smooth_options o)
   if(before.inverted_tets > 0)
     throw std::runtime_error(o.input + ": " + std::to_string(before.inverted_tets) +
                              " tetrahedra of the mesh are flat; smoothing needs a valid mesh");
+  if(cut && !bodt_report::plane_meets_mesh(*cut, mesh))
+    throw Usage_error("--cut " + o.cut + ": the plane misses the mesh");
+  // The page draws the input beside the result.
+  std::optional<BODT::Tet_mesh> input;
+  if(!o.html.empty()) input = mesh;
   Progress progress(o.quiet, opt);
   const BODT::Smoothing_result result = BODT::smooth(mesh, opt, progress);
   progress.finish();
@@ -187,7 +210,12 @@ int run_smooth(Smooth_options o)
         {"relative volume change", printf_string("%.2e", (after.volume - before.volume) / before.volume)},
         {"features", features_text(o, result)},
         {"output", o.output}};
-    side_files.stage(o.html, BODT::html_report(o.input, before, after, run));
+    bodt_report::Picture_options pictures;
+    pictures.feature_angle = angle_of_edge_ratio(opt.tensor_voting.edge_ratio);
+    pictures.cut = cut;
+    pictures.threads = opt.threads;
+    side_files.stage(o.html, BODT::html_report(o.input, before, after, run,
+                                               bodt_report::mesh_pictures_html(*input, mesh, pictures)));
   }
   write_output(o.output, mesh, output_format, opt.threads);
   side_files.commit();
@@ -264,9 +292,17 @@ Command add_smooth(CLI::App& command)
                       ", the library's feature_corner_ratio 0.05; a cube corner: 90)")
           ->check(CLI::Validator(check_feature_angle, "DEG"));
   command.add_option("--report", o->report, "write a JSON report: options, every sweep, quality before and after");
-  command.add_option("--html", o->html,
-                     "write a self-contained HTML page: quality table, subdomain volumes and the dihedral-angle "
-                     "histograms before and after on one axis");
+  CLI::Option* html =
+      command.add_option("--html", o->html,
+                         "write a self-contained HTML page: quality table, subdomain volumes, the dihedral-angle "
+                         "histograms before and after on one axis, and pictures of the surface and of a cut before "
+                         "and after, cells coloured by their smallest dihedral angle, the worst ones ringed");
+  command
+      .add_option("--cut", o->cut,
+                  "the plane of the page's cut: x=V, y=V, z=V or PX,PY,PZ,NX,NY,NZ (a point and a normal; default: "
+                  "through the input's worst tetrahedron, facing the surface pictures' viewer)")
+      ->check(CLI::Validator(check_cut_plane, "PLANE"))
+      ->needs(html);
   command.add_flag("--json", o->json,
                    "print the report (what --report writes) on standard output as one line of JSON, instead of the "
                    "table");
