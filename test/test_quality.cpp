@@ -1,12 +1,13 @@
 // Quality measures: dihedral angles against CGAL's independent
 // approximate_dihedral_angle, counts, volumes, exact inversion test, and the
 // real meshes of ../shared/data when present.
+#include "report/json_report.h"
+
 #include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
 #include <CGAL/BODT_3/IO/medit.h>
-#include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>

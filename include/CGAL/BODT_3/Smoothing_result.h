@@ -88,6 +88,8 @@ struct Iteration_stats
   Topology_stats topology;            // the flip pass after the sweep
   Insertion_stats insertion;          // the insertion pass that ends the iteration
   double sweep_seconds = 0;           // time of the sweep alone
+  double max_min_seconds = 0;         // of the max-min steps
+  double reread_seconds = 0;          // of re-reading the flat view after the flips and the insertion
   double seconds = 0;                 // since the start of the smoothing
 };
 

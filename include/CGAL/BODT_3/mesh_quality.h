@@ -253,7 +253,7 @@ mesh_quality(const Tr& tr, const Quality_options& opt = Quality_options())
   return acc.result(tr.number_of_vertices());
 }
 
-// The report as JSON: CGAL/BODT_3/IO/json_report.h.
+// The report as JSON: src/report/json_report.h (the tools', not the package's).
 
 /// The report as a few lines of text for people.
 inline void print_report(std::ostream& out, const Quality_report& r)

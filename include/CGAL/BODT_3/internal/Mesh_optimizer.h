@@ -230,15 +230,17 @@ private:
                                opt.quality_measure, known ? &measured_ : nullptr);
     stats.topology.seconds = timer_.time() - start;
     charge(result_.phases.flips);
-    if(stats.topology.total() > 0) reread();
+    if(stats.topology.total() > 0) reread(stats);
   }
 
   void max_min_steps(Iteration_stats& stats)
   {
+    const double start = timer_.time();
     sweep_->forget_moves();
     sweep_->raise_worst(phase_options_.max_min_threshold, stats);
     view_.write_back();
     stamp_moves();
+    stats.max_min_seconds = timer_.time() - start;
     charge(result_.phases.max_min);
   }
 
@@ -263,13 +265,14 @@ private:
     insertion_budget_ -= stats.insertion.vertices_added;
     flip_history_.clock = insertion_history_.clock;
     charge(result_.phases.insertion);
-    if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread();
+    if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread(stats);
   }
 
   // After the triangulation changed: re-read it, classify the new vertices, and
   // mark the stars that changed.
-  void reread()
+  void reread(Iteration_stats& stats)
   {
+    const double start = timer_.time();
     view_.refresh();
     view_.read_points();
     classification_.kind.resize(mesh_.number_of_vertices(), Vertex_kind::fixed);
@@ -283,6 +286,7 @@ private:
     new_star_at_.resize(mesh_.number_of_vertices(), now);
     for(int v : changed) changed_at_[v] = new_star_at_[v] = now;
     sweep_->refresh(changed);
+    stats.reread_seconds += timer_.time() - start;
     charge(result_.phases.reread);
   }
 
