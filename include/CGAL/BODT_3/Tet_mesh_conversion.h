@@ -92,6 +92,460 @@ private:
   std::map<T, int> ids_;
 };
 
+
+// What the steps of `tet_mesh_to_c3t3` share: the input, the complex being built
+// (swapped into the caller's only at the end, so that a refusal leaves the caller's
+// unchanged), and the handle of each point and each tetrahedron.
+template <class C3T3>
+struct Tet_mesh_to_c3t3_state
+{
+  using Tr = typename C3T3::Triangulation;
+  using Vertex_handle = typename Tr::Vertex_handle;
+  using Cell_handle = typename Tr::Cell_handle;
+
+  Tet_mesh_to_c3t3_state(const Tet_mesh& m, const std::string& f, const Tet_face_matching* matched)
+    : mesh(m), file(f), faces(matched), n(static_cast<int>(m.points.size())), nt(m.tets.size()),
+      threads(matched ? matched->threads : 1), workers(threads)
+  {}
+
+  [[noreturn]] void fail(const std::string& message) const { throw Mesh_io_error(file, 0, message); }
+
+  const Tet_mesh& mesh;
+  const std::string& file;
+  const Tet_face_matching* faces;          // the caller's matching, or `own`
+  std::optional<Tet_face_matching> own;
+  const int n;                             // points
+  const std::size_t nt;                    // tetrahedra
+  const int threads;
+  Thread_workers<char> workers;
+  C3T3 result;
+  std::vector<char> used;                  // per point: whether a tetrahedron uses it
+  std::vector<Vertex_handle> vh;           // per point; a default handle for unused points
+  std::vector<Cell_handle> cells;          // per tetrahedron
+  Vertex_handle infinite;
+};
+
+// Step 1: one label per entity, vertex indices in range and distinct within each
+// tetrahedron, no negatively oriented tetrahedron. Checked in parallel blocks; the
+// first tetrahedron that fails is reported.
+template <class C3T3>
+void check_tetrahedra(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  const Tet_mesh& mesh = s.mesh;
+  const std::size_t nt = s.nt;
+  if(nt == 0) s.fail("the mesh has no tetrahedra");
+  if(mesh.tet_labels.size() != nt || mesh.triangle_labels.size() != mesh.triangles.size() ||
+     mesh.edge_labels.size() != mesh.edges.size())
+    s.fail("tetrahedra, triangles and edges need one label each");
+  auto problem = [&](std::size_t t) -> std::string {
+    const auto& q = mesh.tets[t];
+    for(int k = 0; k < 4; ++k)
+    {
+      if(q[k] < 0 || q[k] >= s.n)
+        return "tetrahedron " + std::to_string(t + 1) + " refers to vertex " + std::to_string(q[k] + 1) +
+               ", but there are " + std::to_string(s.n) + " vertices";
+      for(int j = 0; j < k; ++j)
+        if(q[j] == q[k]) return "tetrahedron " + std::to_string(t + 1) + " uses a vertex twice";
+    }
+    // Flat tetrahedra are kept, as the readers keep them; inverted ones would turn
+    // the triangulation inside out.
+    if(CGAL::orientation(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]) ==
+       CGAL::NEGATIVE)
+      return "tetrahedron " + std::to_string(t + 1) +
+             " is negatively oriented; a triangulation needs positively oriented cells";
+    return std::string();
+  };
+  std::vector<std::size_t> first_bad(static_cast<std::size_t>(block_count(nt)), nt);
+  s.workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
+    for(std::size_t t = begin; t < end; ++t)
+      if(!problem(t).empty()) { first_bad[static_cast<std::size_t>(b)] = t; return; }
+  });
+  for(std::size_t t : first_bad)
+    if(t < nt) s.fail(problem(t));
+}
+
+// Step 2: an empty triangulation of dimension 3 with its infinite vertex, and a
+// vertex per point some tetrahedron uses, in the points' order.
+template <class C3T3>
+void create_vertices(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  using Tr = typename C3T3::Triangulation;
+  using Bare_point = std::decay_t<decltype(std::declval<typename Tr::Geom_traits>().construct_point_3_object()(
+      std::declval<typename Tr::Point>()))>;
+  s.used.assign(static_cast<std::size_t>(s.n), 0);
+  for(const auto& q : s.mesh.tets)
+    for(int v : q) s.used[v] = 1;
+  Tr& tr = s.result.triangulation();
+  auto& tds = tr.tds();
+  tds.clear();   // not tr.clear(), which would create a new infinite vertex
+  tds.set_dimension(3);
+  s.infinite = tds.create_vertex();
+  tr.set_infinite_vertex(s.infinite);
+  s.vh.assign(static_cast<std::size_t>(s.n), typename Tr::Vertex_handle());
+  for(int i = 0; i < s.n; ++i)
+  {
+    if(!s.used[i]) continue;
+    const auto& p = s.mesh.points[i];
+    s.vh[i] = tds.create_vertex();
+    s.vh[i]->set_point(typename Tr::Point(Bare_point(p.x(), p.y(), p.z())));
+  }
+}
+
+// Step 3: the finite cells, glued along the faces they share, once no face has
+// three tetrahedra and two tetrahedra on a face induce opposite orientations on it.
+template <class C3T3>
+void glue_finite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  const Tet_mesh& mesh = s.mesh;
+  const std::size_t nt = s.nt;
+  auto& tds = s.result.triangulation().tds();
+  if(!s.faces) s.faces = &s.own.emplace(mesh.tets, mesh.points.size());
+  const Tet_face_matching& faces = *s.faces;
+  if(faces.crowded_face >= 0)
+  {
+    const auto t = static_cast<std::size_t>(faces.crowded_face / 4);
+    s.fail("face (" + face_to_string(oriented_face(mesh.tets[t], static_cast<int>(faces.crowded_face % 4))) +
+           ") belongs to three or more tetrahedra");
+  }
+  std::vector<std::size_t> first_bad(static_cast<std::size_t>(block_count(nt)), nt);
+  s.workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
+    for(std::size_t t = begin; t < end; ++t)
+      for(int i = 0; i < 4; ++i)
+      {
+        const int m = faces.match[4 * t + static_cast<std::size_t>(i)];
+        const auto other = static_cast<std::size_t>(m / 4);
+        if(m < 0 || other > t) continue;
+        if(smallest_first(oriented_face(mesh.tets[t], i)) == smallest_first(oriented_face(mesh.tets[other], m % 4)))
+        {
+          first_bad[static_cast<std::size_t>(b)] = t;
+          return;
+        }
+      }
+  });
+  for(std::size_t t : first_bad)
+    for(int i = 0; t < nt && i < 4; ++i)
+    {
+      const int m = faces.match[4 * t + static_cast<std::size_t>(i)];
+      const auto other = static_cast<std::size_t>(m / 4);
+      const std::array<int, 3> f = oriented_face(mesh.tets[t], i);
+      if(m >= 0 && other < t && smallest_first(f) == smallest_first(oriented_face(mesh.tets[other], m % 4)))
+        s.fail("tetrahedra " + std::to_string(other + 1) + " and " + std::to_string(t + 1) +
+               " lie on the same side of their common face (" + face_to_string(f) + ")");
+    }
+  // The cells, one after the other (the container is not thread-safe); then each
+  // cell's neighbours and each vertex's first cell, written by their owner in parallel.
+  s.cells.resize(nt);
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    const auto& q = mesh.tets[t];
+    s.cells[t] = tds.create_cell(s.vh[q[0]], s.vh[q[1]], s.vh[q[2]], s.vh[q[3]]);
+  }
+  s.workers.for_blocks(nt, [&](char&, int, std::size_t begin, std::size_t end) {
+    for(std::size_t t = begin; t < end; ++t)
+      for(int i = 0; i < 4; ++i)
+      {
+        const int m = faces.match[4 * t + static_cast<std::size_t>(i)];
+        if(m >= 0) s.cells[t]->set_neighbor(i, s.cells[static_cast<std::size_t>(m / 4)]);
+      }
+  });
+  s.workers.for_each(0, s.n, [&](char&, int v) {
+    const int k = faces.vertex_cells_begin[v];
+    if(k < faces.vertex_cells_begin[v + 1]) s.vh[v]->set_cell(s.cells[static_cast<std::size_t>(faces.vertex_cells[k])]);
+  }, 4096);
+}
+
+// Step 4: an infinite cell on each boundary face: the finite cell's vertices with
+// the infinite vertex in place of the far one and two others swapped, so that both
+// cells induce opposite orientations on the face. Infinite cells are then glued
+// along boundary edges, which must have exactly two boundary faces.
+template <class C3T3>
+void close_with_infinite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  using Vertex_handle = typename Tet_mesh_to_c3t3_state<C3T3>::Vertex_handle;
+  using Cell_handle = typename Tet_mesh_to_c3t3_state<C3T3>::Cell_handle;
+  auto& tds = s.result.triangulation().tds();
+  const Vertex_handle inf = s.infinite;
+  std::unordered_map<std::uint64_t, std::vector<std::pair<Cell_handle, int>>> hull_edges;
+  for(std::size_t t = 0; t < s.nt; ++t)
+    for(int i = 0; i < 4; ++i)
+    {
+      const Cell_handle c = s.cells[t];
+      if(c->neighbor(i) != Cell_handle()) continue;
+      std::array<Vertex_handle, 4> v = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
+      std::array<int, 4> id = s.mesh.tets[t];
+      v[i] = inf;
+      id[i] = -1;
+      std::swap(v[(i + 1) & 3], v[(i + 2) & 3]);
+      std::swap(id[(i + 1) & 3], id[(i + 2) & 3]);
+      const Cell_handle h = tds.create_cell(v[0], v[1], v[2], v[3]);
+      if(inf->cell() == Cell_handle()) inf->set_cell(h);
+      tds.set_adjacency(h, i, c, i);
+      for(int k = 0; k < 4; ++k)
+      {
+        if(k == i) continue;
+        // The face opposite `k` holds the infinite vertex and the boundary edge `e`.
+        int e[2], m = 0;
+        for(int j = 0; j < 4; ++j)
+          if(j != k && j != i) e[m++] = id[j];
+        hull_edges[packed_edge_key(e[0], e[1])].emplace_back(h, k);
+      }
+    }
+  for(const auto& he : hull_edges)
+  {
+    if(he.second.size() == 2)
+    {
+      tds.set_adjacency(he.second[0].first, he.second[0].second, he.second[1].first, he.second[1].second);
+      continue;
+    }
+    const int a = static_cast<int>(he.first >> 32), b = static_cast<int>(he.first & 0xffffffffu);
+    s.fail("the boundary is not manifold at edge (" + std::to_string(a + 1) + " " + std::to_string(b + 1) +
+           "): " + std::to_string(he.second.size()) +
+           " boundary triangles meet there, and a triangulation needs two to close the outside");
+  }
+}
+
+// Step 5: triangulations reach the cells around a vertex through the faces around
+// it, so tetrahedra that only touch at a vertex would be lost. The tetrahedra around
+// each vertex must be connected through faces holding it (the outside cells connect
+// nothing more: every boundary edge has two boundary faces, checked in step 4);
+// vertices are checked in parallel, and the first failing one reported.
+template <class C3T3>
+void check_vertex_stars(const Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  const Tet_face_matching& faces = *s.faces;
+  struct Star_worker
+  {
+    std::vector<int> mark;    // per cell: the last vertex whose star reached it
+    std::vector<int> stack;
+    int first_bad = -1;
+  };
+  Thread_workers<Star_worker> star_workers(s.threads);
+  star_workers.for_each(0, s.n, [&](Star_worker& w, int v) {
+    const int b = faces.vertex_cells_begin[v], e = faces.vertex_cells_begin[v + 1];
+    if(b == e) return;
+    if(w.mark.empty()) w.mark.assign(s.nt, -1);
+    w.mark[faces.vertex_cells[b]] = v;
+    w.stack.assign(1, faces.vertex_cells[b]);
+    int reached = 1;
+    while(!w.stack.empty())
+    {
+      const int c = w.stack.back();
+      w.stack.pop_back();
+      for(int i = 0; i < 4; ++i)
+      {
+        const int m = faces.match[4 * static_cast<std::size_t>(c) + i];
+        if(s.mesh.tets[c][i] == v || m < 0 || w.mark[m / 4] == v) continue;
+        w.mark[m / 4] = v;
+        w.stack.push_back(m / 4);
+        ++reached;
+      }
+    }
+    if(reached != e - b && (w.first_bad < 0 || v < w.first_bad)) w.first_bad = v;
+  }, 256);
+  int pinched = -1;
+  star_workers.each_worker([&pinched](const Star_worker& w) {
+    if(w.first_bad >= 0 && (pinched < 0 || w.first_bad < pinched)) pinched = w.first_bad;
+  });
+  if(pinched >= 0)
+    s.fail("the mesh is not manifold at vertex " + std::to_string(pinched + 1) + ": its " +
+           std::to_string(faces.vertex_cells_begin[pinched + 1] - faces.vertex_cells_begin[pinched]) +
+           " tetrahedra form separate groups that only touch there, and a triangulation needs them "
+           "connected through faces");
+}
+
+// The subdomain index of tetrahedron `t` in the complex (all in 1 when every label is 0).
+template <class C3T3>
+typename C3T3::Subdomain_index complex_subdomain(const Tet_mesh& mesh, std::size_t t, bool all_zero)
+{
+  return typename C3T3::Subdomain_index(all_zero ? 1 : mesh.tet_labels[t]);
+}
+
+// Step 6a: every vertex of dimension 3, the labelled cells in the complex, and each
+// vertex's index the subdomain of its last cell in the complex.
+template <class C3T3>
+void add_complex_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  const Tet_mesh& mesh = s.mesh;
+  const Tet_face_matching& faces = *s.faces;
+  for(int i = 0; i < s.n; ++i)
+    if(s.used[i]) s.result.set_dimension(s.vh[i], 3);
+  const bool all_zero = mesh.all_labels_zero();
+  for(std::size_t t = 0; t < s.nt; ++t)
+    if(mesh.in_mesh(t, all_zero)) s.result.add_to_complex(s.cells[t], complex_subdomain<C3T3>(mesh, t, all_zero));
+  s.workers.for_each(0, s.n, [&](char&, int v) {
+    for(int k = faces.vertex_cells_begin[v + 1]; k-- > faces.vertex_cells_begin[v];)
+    {
+      const auto t = static_cast<std::size_t>(faces.vertex_cells[k]);
+      if(!mesh.in_mesh(t, all_zero)) continue;
+      set_vertex_index(s.vh[v], complex_subdomain<C3T3>(mesh, t, all_zero));
+      break;
+    }
+  }, 4096);
+}
+
+// Step 6b: the faces between different subdomains (or a subdomain and the outside)
+// as facets of the complex, each from the first cell that has it, found from the
+// flat arrays in parallel blocks; their vertices get dimension 2 and the patch.
+template <class C3T3>
+void add_complex_facets(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  using Subdomain_index = typename C3T3::Subdomain_index;
+  using Surface_patch_index = typename C3T3::Surface_patch_index;
+  const Tet_mesh& mesh = s.mesh;
+  const Tet_face_matching& faces = *s.faces;
+  const std::size_t nt = s.nt;
+  const bool all_zero = mesh.all_labels_zero();
+  std::unordered_map<std::array<int, 3>, int, internal::Id_hash> listed;
+  int next_patch = 1;
+  if constexpr(!Is_pair<Surface_patch_index>::value)
+    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    {
+      listed.emplace(sorted(mesh.triangles[f]), mesh.triangle_labels[f]);
+      next_patch = (std::max)(next_patch, mesh.triangle_labels[f] + 1);
+    }
+  std::vector<Subdomain_index> label(nt);
+  for(std::size_t t = 0; t < nt; ++t)
+    if(mesh.in_mesh(t, all_zero)) label[t] = complex_subdomain<C3T3>(mesh, t, all_zero);
+  std::vector<std::vector<std::pair<std::size_t, int>>> block_faces(static_cast<std::size_t>(block_count(nt)));
+  s.workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
+    for(std::size_t t = begin; t < end; ++t)
+      for(int i = 0; i < 4; ++i)
+      {
+        const int m = faces.match[4 * t + static_cast<std::size_t>(i)];
+        const Subdomain_index other = m < 0 ? Subdomain_index() : label[static_cast<std::size_t>(m / 4)];
+        if(!(label[t] == other) && (m < 0 || static_cast<std::size_t>(m / 4) > t))
+          block_faces[static_cast<std::size_t>(b)].emplace_back(t, i);
+      }
+  });
+  std::map<std::pair<Subdomain_index, Subdomain_index>, Surface_patch_index> derived;
+  for(const auto& found : block_faces)
+    for(const auto& [t, i] : found)
+    {
+      const auto c = s.cells[t];
+      const Subdomain_index s0 = label[t], s1 = s.result.subdomain_index(c->neighbor(i));
+      const std::pair<Subdomain_index, Subdomain_index> sides = (std::minmax)(s0, s1);
+      Surface_patch_index patch;
+      if constexpr(Is_pair<Surface_patch_index>::value)
+        patch = Surface_patch_index(sides.first, sides.second);
+      else
+      {
+        const auto it = listed.find(sorted(oriented_face(mesh.tets[t], i)));
+        if(it != listed.end() && !(Surface_patch_index(it->second) == Surface_patch_index()))
+          patch = Surface_patch_index(it->second);
+        else
+        {
+          auto d = derived.emplace(sides, Surface_patch_index(next_patch));
+          if(d.second) ++next_patch;
+          patch = d.first->second;
+        }
+      }
+      s.result.add_to_complex(c, i, patch);
+      for(int k = 0; k < 4; ++k)
+        if(k != i)
+        {
+          s.result.set_dimension(c->vertex(k), 2);
+          set_vertex_index(c->vertex(k), patch);
+        }
+    }
+}
+
+// Step 6c: `mesh.edges` as curve edges of the complex, their vertices of dimension 1.
+template <class C3T3>
+void add_curve_edges(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  using Curve_index = typename C3T3::Curve_index;
+  const Tet_mesh& mesh = s.mesh;
+  auto& tds = s.result.triangulation().tds();
+  int unlabelled_curve = 1;
+  for(int l : mesh.edge_labels) unlabelled_curve = (std::max)(unlabelled_curve, l + 1);
+  for(std::size_t e = 0; e < mesh.edges.size(); ++e)
+  {
+    const int a = mesh.edges[e][0], b = mesh.edges[e][1];
+    typename Tet_mesh_to_c3t3_state<C3T3>::Cell_handle c;
+    int i, j;
+    if(a < 0 || b < 0 || a >= s.n || b >= s.n || a == b || !s.used[a] || !s.used[b] ||
+       !tds.is_edge(s.vh[a], s.vh[b], c, i, j))
+      s.fail("Edges entry " + std::to_string(e + 1) + " (" + std::to_string(a + 1) + " " + std::to_string(b + 1) +
+             ") is not an edge of the tetrahedra");
+    if(s.result.is_in_complex(s.vh[a], s.vh[b])) continue;
+    Curve_index curve(mesh.edge_labels[e]);
+    if(curve == Curve_index()) curve = Curve_index(unlabelled_curve);
+    s.result.add_to_complex(s.vh[a], s.vh[b], curve);
+    for(int v : {a, b})
+    {
+      s.result.set_dimension(s.vh[v], 1);
+      set_vertex_index(s.vh[v], curve);
+    }
+  }
+}
+
+// Step 6d: `mesh.corners` then `mesh.required_vertices` as corners, numbered 1, 2, ...
+template <class C3T3>
+void add_corners(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  using Corner_index = typename C3T3::Corner_index;
+  int next_corner = 1;
+  for(const std::vector<int>* list : {&s.mesh.corners, &s.mesh.required_vertices})
+    for(int v : *list)
+    {
+      if(v < 0 || v >= s.n) s.fail("corner " + std::to_string(v + 1) + " is not a vertex");
+      if(!s.used[v] || s.result.is_in_complex(s.vh[v])) continue;
+      const Corner_index corner(next_corner++);
+      s.result.add_to_complex(s.vh[v], corner);
+      set_vertex_index(s.vh[v], corner);
+    }
+}
+
+// Step 6: the complex: cells, facets, curves and corners, each vertex with the
+// dimension and index of the lowest face it lies on; then the facets' surface centers.
+template <class C3T3>
+void add_labels(Tet_mesh_to_c3t3_state<C3T3>& s)
+{
+  add_complex_cells(s);
+  add_complex_facets(s);
+  add_curve_edges(s);
+  add_corners(s);
+  set_facet_surface_centers(s.result);
+}
+
+// What `c3t3_to_tet_mesh` and `update_tet_mesh` read from a complex: a vertex's
+// position in doubles, and a facet of the complex as the triangle a file lists,
+// its normal out of the complex cell on its side (out of the one with the
+// smaller subdomain index between two subdomains).
+template <class C3T3>
+class Complex_reader
+{
+public:
+  using Tr = typename C3T3::Triangulation;
+  using Vertex_handle = typename Tr::Vertex_handle;
+
+  explicit Complex_reader(const C3T3& c3t3) : c3t3_(c3t3), tr_(c3t3.triangulation()) {}
+
+  Tet_mesh::Point point(Vertex_handle v) const
+  {
+    const auto& p = tr_.geom_traits().construct_point_3_object()(v->point());
+    return Tet_mesh::Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+
+  std::array<Vertex_handle, 3> triangle(const typename C3T3::Facet& f) const
+  {
+    using U = Triangulation_utils_3;
+    const auto mirror = tr_.mirror_facet(f);
+    const bool flip = !c3t3_.is_in_complex(f.first) ||
+                      (c3t3_.is_in_complex(mirror.first) &&
+                       c3t3_.subdomain_index(mirror.first) < c3t3_.subdomain_index(f.first));
+    const auto& side = flip ? mirror : f;
+    // Reversing CGAL's order (counterclockwise seen from inside) points the normal out.
+    return {side.first->vertex(U::vertex_triple_index(side.second, 2)),
+            side.first->vertex(U::vertex_triple_index(side.second, 1)),
+            side.first->vertex(U::vertex_triple_index(side.second, 0))};
+  }
+
+private:
+  const C3T3& c3t3_;
+  const Tr& tr_;
+};
+
 } // namespace internal
 
 /// Builds `c3t3` (a `Mesh_complex_3_in_triangulation_3`) from `mesh`, replacing its
@@ -138,328 +592,25 @@ void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file 
                       const internal::Tet_face_matching* faces = nullptr)
 {
   using namespace internal;
-  using Tr = typename C3T3::Triangulation;
-  using Vertex_handle = typename Tr::Vertex_handle;
-  using Cell_handle = typename Tr::Cell_handle;
-  using Subdomain_index = typename C3T3::Subdomain_index;
   using Surface_patch_index = typename C3T3::Surface_patch_index;
-  using Curve_index = typename C3T3::Curve_index;
-  using Corner_index = typename C3T3::Corner_index;
-  using Bare_point = std::decay_t<decltype(std::declval<typename Tr::Geom_traits>().construct_point_3_object()(
-      std::declval<typename Tr::Point>()))>;
-  static_assert(std::is_constructible<Subdomain_index, int>::value, "Subdomain_index must be constructible from int");
+  static_assert(std::is_constructible<typename C3T3::Subdomain_index, int>::value,
+                "Subdomain_index must be constructible from int");
   static_assert(Is_pair<Surface_patch_index>::value || std::is_constructible<Surface_patch_index, int>::value,
                 "Surface_patch_index must be a std::pair of subdomain indices or constructible from int");
-  static_assert(std::is_constructible<Curve_index, int>::value, "Curve_index must be constructible from int");
-  static_assert(std::is_constructible<Corner_index, int>::value, "Corner_index must be constructible from int");
+  static_assert(std::is_constructible<typename C3T3::Curve_index, int>::value,
+                "Curve_index must be constructible from int");
+  static_assert(std::is_constructible<typename C3T3::Corner_index, int>::value,
+                "Corner_index must be constructible from int");
 
-  auto fail = [&](const std::string& message) { throw Mesh_io_error(file, 0, message); };
-  const int n = static_cast<int>(mesh.points.size());
-  const std::size_t nt = mesh.tets.size();
-  if(nt == 0) fail("the mesh has no tetrahedra");
-  if(mesh.tet_labels.size() != nt || mesh.triangle_labels.size() != mesh.triangles.size() ||
-     mesh.edge_labels.size() != mesh.edges.size())
-    fail("tetrahedra, triangles and edges need one label each");
-  // Checked in parallel blocks; the first tetrahedron that fails is reported.
-  auto problem = [&](std::size_t t) -> std::string {
-    const auto& q = mesh.tets[t];
-    for(int k = 0; k < 4; ++k)
-    {
-      if(q[k] < 0 || q[k] >= n)
-        return "tetrahedron " + std::to_string(t + 1) + " refers to vertex " + std::to_string(q[k] + 1) +
-               ", but there are " + std::to_string(n) + " vertices";
-      for(int j = 0; j < k; ++j)
-        if(q[j] == q[k]) return "tetrahedron " + std::to_string(t + 1) + " uses a vertex twice";
-    }
-    // Flat tetrahedra are kept, as the readers keep them; inverted ones would turn
-    // the triangulation inside out.
-    if(CGAL::orientation(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]) ==
-       CGAL::NEGATIVE)
-      return "tetrahedron " + std::to_string(t + 1) +
-             " is negatively oriented; a triangulation needs positively oriented cells";
-    return std::string();
-  };
-  const int threads = faces ? faces->threads : 1;
-  const int blocks = block_count(nt);
-  std::vector<std::size_t> first_bad(static_cast<std::size_t>(blocks), nt);
-  Thread_workers<char> workers(threads);
-  workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
-    for(std::size_t t = begin; t < end; ++t)
-      if(!problem(t).empty()) { first_bad[static_cast<std::size_t>(b)] = t; return; }
-  });
-  for(std::size_t t : first_bad)
-    if(t < nt) fail(problem(t));
-  std::vector<char> used(n, 0);
-  for(const auto& q : mesh.tets)
-    for(int v : q) used[v] = 1;
-
-  C3T3 result;
-  Tr& tr = result.triangulation();
-  auto& tds = tr.tds();
-  tds.clear();   // not tr.clear(), which would create a new infinite vertex
-  tds.set_dimension(3);
-  const Vertex_handle inf = tds.create_vertex();
-  tr.set_infinite_vertex(inf);
-  std::vector<Vertex_handle> vh(n);
-  for(int i = 0; i < n; ++i)
-  {
-    if(!used[i]) continue;
-    const auto& p = mesh.points[i];
-    vh[i] = tds.create_vertex();
-    vh[i]->set_point(typename Tr::Point(Bare_point(p.x(), p.y(), p.z())));
-  }
-
-  // Finite cells, glued along the faces they share.
-  std::optional<Tet_face_matching> own;
-  if(!faces) faces = &own.emplace(mesh.tets, mesh.points.size());
-  if(faces->crowded_face >= 0)
-  {
-    const auto t = static_cast<std::size_t>(faces->crowded_face / 4);
-    fail("face (" + face_to_string(oriented_face(mesh.tets[t], static_cast<int>(faces->crowded_face % 4))) +
-         ") belongs to three or more tetrahedra");
-  }
-  // Two cells on one face must induce opposite orientations on it.
-  std::fill(first_bad.begin(), first_bad.end(), nt);
-  workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
-    for(std::size_t t = begin; t < end; ++t)
-      for(int i = 0; i < 4; ++i)
-      {
-        const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
-        const auto other = static_cast<std::size_t>(m / 4);
-        if(m < 0 || other > t) continue;
-        if(smallest_first(oriented_face(mesh.tets[t], i)) == smallest_first(oriented_face(mesh.tets[other], m % 4)))
-        {
-          first_bad[static_cast<std::size_t>(b)] = t;
-          return;
-        }
-      }
-  });
-  for(std::size_t t : first_bad)
-    for(int i = 0; t < nt && i < 4; ++i)
-    {
-      const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
-      const auto other = static_cast<std::size_t>(m / 4);
-      const std::array<int, 3> f = oriented_face(mesh.tets[t], i);
-      if(m >= 0 && other < t && smallest_first(f) == smallest_first(oriented_face(mesh.tets[other], m % 4)))
-        fail("tetrahedra " + std::to_string(other + 1) + " and " + std::to_string(t + 1) +
-             " lie on the same side of their common face (" + face_to_string(f) + ")");
-    }
-  // The cells, one after the other (the container is not thread-safe); then each
-  // cell's neighbours and each vertex's first cell, written by their owner in parallel.
-  std::vector<Cell_handle> cells(nt);
-  for(std::size_t t = 0; t < nt; ++t)
-  {
-    const auto& q = mesh.tets[t];
-    cells[t] = tds.create_cell(vh[q[0]], vh[q[1]], vh[q[2]], vh[q[3]]);
-  }
-  workers.for_blocks(nt, [&](char&, int, std::size_t begin, std::size_t end) {
-    for(std::size_t t = begin; t < end; ++t)
-      for(int i = 0; i < 4; ++i)
-      {
-        const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
-        if(m >= 0) cells[t]->set_neighbor(i, cells[static_cast<std::size_t>(m / 4)]);
-      }
-  });
-  workers.for_each(0, n, [&](char&, int v) {
-    const int k = faces->vertex_cells_begin[v];
-    if(k < faces->vertex_cells_begin[v + 1]) vh[v]->set_cell(cells[static_cast<std::size_t>(faces->vertex_cells[k])]);
-  }, 4096);
-
-  // An infinite cell on each boundary face: the finite cell's vertices with the
-  // infinite vertex in place of the far one and two others swapped, so that both
-  // cells induce opposite orientations on the face. Infinite cells are then glued
-  // along boundary edges, which must have exactly two boundary faces.
-  std::unordered_map<std::uint64_t, std::vector<std::pair<Cell_handle, int>>> hull_edges;
-  for(std::size_t t = 0; t < nt; ++t)
-    for(int i = 0; i < 4; ++i)
-    {
-      const Cell_handle c = cells[t];
-      if(c->neighbor(i) != Cell_handle()) continue;
-      std::array<Vertex_handle, 4> v = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
-      std::array<int, 4> id = mesh.tets[t];
-      v[i] = inf;
-      id[i] = -1;
-      std::swap(v[(i + 1) & 3], v[(i + 2) & 3]);
-      std::swap(id[(i + 1) & 3], id[(i + 2) & 3]);
-      const Cell_handle h = tds.create_cell(v[0], v[1], v[2], v[3]);
-      if(inf->cell() == Cell_handle()) inf->set_cell(h);
-      tds.set_adjacency(h, i, c, i);
-      for(int k = 0; k < 4; ++k)
-      {
-        if(k == i) continue;
-        // The face opposite `k` holds the infinite vertex and the boundary edge `e`.
-        int e[2], m = 0;
-        for(int j = 0; j < 4; ++j)
-          if(j != k && j != i) e[m++] = id[j];
-        hull_edges[packed_edge_key(e[0], e[1])].emplace_back(h, k);
-      }
-    }
-  for(const auto& he : hull_edges)
-  {
-    if(he.second.size() == 2)
-    {
-      tds.set_adjacency(he.second[0].first, he.second[0].second, he.second[1].first, he.second[1].second);
-      continue;
-    }
-    const int a = static_cast<int>(he.first >> 32), b = static_cast<int>(he.first & 0xffffffffu);
-    fail("the boundary is not manifold at edge (" + std::to_string(a + 1) + " " + std::to_string(b + 1) +
-         "): " + std::to_string(he.second.size()) +
-         " boundary triangles meet there, and a triangulation needs two to close the outside");
-  }
-
-  // Triangulations reach the cells around a vertex through the faces around it:
-  // tetrahedra that only touch at a vertex would be lost. The tetrahedra around
-  // each vertex must be connected through faces holding it (the outside cells
-  // connect nothing more: every boundary edge has two boundary faces, checked
-  // above); vertices are checked in parallel, and the first failing one reported.
-  struct Star_worker
-  {
-    std::vector<int> mark;    // per cell: the last vertex whose star reached it
-    std::vector<int> stack;
-    int first_bad = -1;
-  };
-  Thread_workers<Star_worker> star_workers(threads);
-  star_workers.for_each(0, n, [&](Star_worker& w, int v) {
-    const int b = faces->vertex_cells_begin[v], e = faces->vertex_cells_begin[v + 1];
-    if(b == e) return;
-    if(w.mark.empty()) w.mark.assign(nt, -1);
-    w.mark[faces->vertex_cells[b]] = v;
-    w.stack.assign(1, faces->vertex_cells[b]);
-    int reached = 1;
-    while(!w.stack.empty())
-    {
-      const int c = w.stack.back();
-      w.stack.pop_back();
-      for(int i = 0; i < 4; ++i)
-      {
-        const int m = faces->match[4 * static_cast<std::size_t>(c) + i];
-        if(mesh.tets[c][i] == v || m < 0 || w.mark[m / 4] == v) continue;
-        w.mark[m / 4] = v;
-        w.stack.push_back(m / 4);
-        ++reached;
-      }
-    }
-    if(reached != e - b && (w.first_bad < 0 || v < w.first_bad)) w.first_bad = v;
-  }, 256);
-  int pinched = -1;
-  star_workers.each_worker([&pinched](const Star_worker& w) {
-    if(w.first_bad >= 0 && (pinched < 0 || w.first_bad < pinched)) pinched = w.first_bad;
-  });
-  if(pinched >= 0)
-    fail("the mesh is not manifold at vertex " + std::to_string(pinched + 1) + ": its " +
-         std::to_string(faces->vertex_cells_begin[pinched + 1] - faces->vertex_cells_begin[pinched]) +
-         " tetrahedra form separate groups that only touch there, and a triangulation needs them "
-         "connected through faces");
-
-  // The complex.
-  for(int i = 0; i < n; ++i)
-    if(used[i]) result.set_dimension(vh[i], 3);
-  const bool all_zero = mesh.all_labels_zero();
-  auto subdomain = [&](std::size_t t) { return Subdomain_index(all_zero ? 1 : mesh.tet_labels[t]); };
-  for(std::size_t t = 0; t < nt; ++t)
-    if(mesh.in_mesh(t, all_zero)) result.add_to_complex(cells[t], subdomain(t));
-  // A vertex's index: the subdomain of its last cell in the complex.
-  workers.for_each(0, n, [&](char&, int v) {
-    for(int k = faces->vertex_cells_begin[v + 1]; k-- > faces->vertex_cells_begin[v];)
-    {
-      const auto t = static_cast<std::size_t>(faces->vertex_cells[k]);
-      if(!mesh.in_mesh(t, all_zero)) continue;
-      set_vertex_index(vh[v], subdomain(t));
-      break;
-    }
-  }, 4096);
-
-  std::unordered_map<std::array<int, 3>, int, internal::Id_hash> listed;
-  int next_patch = 1;
-  if constexpr(!Is_pair<Surface_patch_index>::value)
-    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    {
-      listed.emplace(sorted(mesh.triangles[f]), mesh.triangle_labels[f]);
-      next_patch = (std::max)(next_patch, mesh.triangle_labels[f] + 1);
-    }
-  // The faces between different subdomains (or a subdomain and the outside), each
-  // from the first cell that has it, found from the flat arrays in parallel blocks.
-  std::vector<Subdomain_index> label(nt);
-  for(std::size_t t = 0; t < nt; ++t)
-    if(mesh.in_mesh(t, all_zero)) label[t] = subdomain(t);
-  std::vector<std::vector<std::pair<std::size_t, int>>> block_faces(static_cast<std::size_t>(blocks));
-  workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
-    for(std::size_t t = begin; t < end; ++t)
-      for(int i = 0; i < 4; ++i)
-      {
-        const int m = faces->match[4 * t + static_cast<std::size_t>(i)];
-        const Subdomain_index other = m < 0 ? Subdomain_index() : label[static_cast<std::size_t>(m / 4)];
-        if(!(label[t] == other) && (m < 0 || static_cast<std::size_t>(m / 4) > t))
-          block_faces[static_cast<std::size_t>(b)].emplace_back(t, i);
-      }
-  });
-  std::map<std::pair<Subdomain_index, Subdomain_index>, Surface_patch_index> derived;
-  for(const auto& found : block_faces)
-    for(const auto& [t, i] : found)
-    {
-      const Cell_handle c = cells[t];
-      const Subdomain_index s0 = label[t], s1 = result.subdomain_index(c->neighbor(i));
-      const std::pair<Subdomain_index, Subdomain_index> sides = (std::minmax)(s0, s1);
-      Surface_patch_index patch;
-      if constexpr(Is_pair<Surface_patch_index>::value)
-        patch = Surface_patch_index(sides.first, sides.second);
-      else
-      {
-        const auto it = listed.find(sorted(oriented_face(mesh.tets[t], i)));
-        if(it != listed.end() && !(Surface_patch_index(it->second) == Surface_patch_index()))
-          patch = Surface_patch_index(it->second);
-        else
-        {
-          auto d = derived.emplace(sides, Surface_patch_index(next_patch));
-          if(d.second) ++next_patch;
-          patch = d.first->second;
-        }
-      }
-      result.add_to_complex(c, i, patch);
-      for(int k = 0; k < 4; ++k)
-        if(k != i)
-        {
-          result.set_dimension(c->vertex(k), 2);
-          set_vertex_index(c->vertex(k), patch);
-        }
-    }
-
-  int unlabelled_curve = 1;
-  for(int l : mesh.edge_labels) unlabelled_curve = (std::max)(unlabelled_curve, l + 1);
-  for(std::size_t e = 0; e < mesh.edges.size(); ++e)
-  {
-    const int a = mesh.edges[e][0], b = mesh.edges[e][1];
-    Cell_handle c;
-    int i, j;
-    if(a < 0 || b < 0 || a >= n || b >= n || a == b || !used[a] || !used[b] ||
-       !tds.is_edge(vh[a], vh[b], c, i, j))
-      fail("Edges entry " + std::to_string(e + 1) + " (" + std::to_string(a + 1) + " " + std::to_string(b + 1) +
-           ") is not an edge of the tetrahedra");
-    if(result.is_in_complex(vh[a], vh[b])) continue;
-    Curve_index curve(mesh.edge_labels[e]);
-    if(curve == Curve_index()) curve = Curve_index(unlabelled_curve);
-    result.add_to_complex(vh[a], vh[b], curve);
-    for(int v : {a, b})
-    {
-      result.set_dimension(vh[v], 1);
-      set_vertex_index(vh[v], curve);
-    }
-  }
-
-  int next_corner = 1;
-  for(const std::vector<int>* list : {&mesh.corners, &mesh.required_vertices})
-    for(int v : *list)
-    {
-      if(v < 0 || v >= n) fail("corner " + std::to_string(v + 1) + " is not a vertex");
-      if(!used[v] || result.is_in_complex(vh[v])) continue;
-      const Corner_index corner(next_corner++);
-      result.add_to_complex(vh[v], corner);
-      set_vertex_index(vh[v], corner);
-    }
-
-  set_facet_surface_centers(result);
-  c3t3.swap(result);
-  if(handles) handles->swap(vh);
+  Tet_mesh_to_c3t3_state<C3T3> state(mesh, file, faces);
+  check_tetrahedra(state);
+  create_vertices(state);
+  glue_finite_cells(state);
+  close_with_infinite_cells(state);
+  check_vertex_stars(state);
+  add_labels(state);
+  c3t3.swap(state.result);
+  if(handles) handles->swap(state.vh);
 }
 
 /// The cells of `c3t3`'s complex as a `Tet_mesh`:
@@ -478,11 +629,9 @@ template <class C3T3>
 Tet_mesh c3t3_to_tet_mesh(const C3T3& c3t3)
 {
   using namespace internal;
-  using Tr = typename C3T3::Triangulation;
-  using Vertex_handle = typename Tr::Vertex_handle;
-  using U = Triangulation_utils_3;
-  const Tr& tr = c3t3.triangulation();
-  auto cp = tr.geom_traits().construct_point_3_object();
+  using Vertex_handle = typename C3T3::Vertex_handle;
+  const auto& tr = c3t3.triangulation();
+  const Complex_reader<C3T3> read(c3t3);
 
   std::unordered_map<Vertex_handle, int> index;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
@@ -493,8 +642,7 @@ Tet_mesh c3t3_to_tet_mesh(const C3T3& c3t3)
     const auto it = index.find(v);
     if(it == index.end()) continue;
     it->second = static_cast<int>(mesh.points.size());
-    const auto& p = cp(v->point());
-    mesh.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    mesh.points.push_back(read.point(v));
   }
   mesh.vertex_refs.assign(mesh.points.size(), 0);
 
@@ -509,17 +657,12 @@ Tet_mesh c3t3_to_tet_mesh(const C3T3& c3t3)
   Label_numbering<typename C3T3::Surface_patch_index> patch_label;
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
   {
-    const auto mirror = tr.mirror_facet(*f);
-    const bool flip = !c3t3.is_in_complex(f->first) ||
-                      (c3t3.is_in_complex(mirror.first) &&
-                       c3t3.subdomain_index(mirror.first) < c3t3.subdomain_index(f->first));
-    const auto& side = flip ? mirror : *f;
+    const std::array<Vertex_handle, 3> triangle = read.triangle(*f);
     std::array<int, 3> t;
     bool written = true;
     for(int k = 0; k < 3; ++k)
     {
-      // Reversing CGAL's order (counterclockwise seen from inside) points the normal out.
-      const auto it = index.find(side.first->vertex(U::vertex_triple_index(side.second, 2 - k)));
+      const auto it = index.find(triangle[k]);
       written = written && it != index.end();
       if(written) t[k] = it->second;
     }
@@ -583,9 +726,8 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
   using namespace internal;
   using Tr = typename C3T3::Triangulation;
   using Vertex_handle = typename Tr::Vertex_handle;
-  using U = Triangulation_utils_3;
   const Tr& tr = c3t3.triangulation();
-  auto cp = tr.geom_traits().construct_point_3_object();
+  const Complex_reader<C3T3> read(c3t3);
   const bool all_zero = mesh.all_labels_zero();
 
   Handle_index_map<Vertex_handle> index_map;
@@ -600,14 +742,12 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
     if(handles[i] != Vertex_handle())
     {
       index_map.insert(handles[i], static_cast<int>(i));
-      const auto& p = cp(handles[i]->point());
-      mesh.points[i] = Tet_mesh::Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      mesh.points[i] = read.point(handles[i]);
     }
   for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
     if(index_map.insert(v, static_cast<int>(mesh.points.size())))
     {
-      const auto& p = cp(v->point());
-      mesh.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      mesh.points.push_back(read.point(v));
       mesh.vertex_refs.push_back(0);
     }
 
@@ -641,13 +781,9 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
     {
       const int patch = static_cast<int>(c3t3.surface_patch_index(*f));
       if(!labels.count(patch)) continue;
-      const auto mirror = tr.mirror_facet(*f);
-      const bool flip = !c3t3.is_in_complex(f->first) ||
-                        (c3t3.is_in_complex(mirror.first) &&
-                         c3t3.subdomain_index(mirror.first) < c3t3.subdomain_index(f->first));
-      const auto& side = flip ? mirror : *f;
+      const std::array<Vertex_handle, 3> triangle = read.triangle(*f);
       std::array<int, 3> t;
-      for(int k = 0; k < 3; ++k) t[k] = index(side.first->vertex(U::vertex_triple_index(side.second, 2 - k)));
+      for(int k = 0; k < 3; ++k) t[k] = index(triangle[k]);
       present.emplace(sorted(t), patch);
       added.push_back(t);
       added_labels.push_back(patch);
