@@ -616,7 +616,7 @@ Vec3 worst_centroid(const Tet_mesh& m)
   {
     if(!all_zero && m.tet_labels[t] == 0) continue;
     const auto& c = m.tets[t];
-    const auto a = BODT::dihedral_angles(m.points[c[0]], m.points[c[1]], m.points[c[2]], m.points[c[3]]);
+    const auto a = BODT::internal::dihedral_angles(m.points[c[0]], m.points[c[1]], m.points[c[2]], m.points[c[3]]);
     const double lo = *std::min_element(a.begin(), a.end());
     if(lo >= worst) continue;
     worst = lo;
@@ -776,7 +776,7 @@ TEST(MeshPictures, LargeMeshesAreSimplifiedWithinTheBudget)
   // The worst cell the default cut meets is the input's worst.
   double worst = 180;
   for(const auto& c : m.tets)
-    worst = std::min(worst, BODT::min_max_dihedral_angle(m.points[c[0]], m.points[c[1]], m.points[c[2]], m.points[c[3]]).first);
+    worst = std::min(worst, BODT::internal::min_max_dihedral_angle(m.points[c[0]], m.points[c[1]], m.points[c[2]], m.points[c[3]]).first);
   bodt_report::Picture_options small = options;
   small.max_cells = 300;
   const std::vector<Svg_picture> q = pictures_of(bodt_report::mesh_pictures_html(m, m, small));
