@@ -81,7 +81,7 @@ void row(const std::string& input, const char* method, const BODT::Quality_repor
     std::printf(" %zu / %zu / %zu / %zu / %zu | %zu / %zu / %zu (%zu undone) | %zu | %.2f | %.2f | %.2f | %.1e |\n",
                 r->topology.flips_2_3,
                 r->topology.flips_3_2, r->topology.edge_removals, r->topology.multi_face_removals,
-                r->topology.boundary_flips, r->insertion.spade_splits, r->insertion.cap_splits,
+                r->topology.boundary_flips, r->insertion.spade_splits + r->insertion.wedge_splits, r->insertion.cap_splits,
                 r->insertion.sliver_splits, r->insertion.undone, t->iterations, 1e3 * t->sweep / double(t->iterations),
                 1e3 * t->flips / double(t->iterations), 1e3 * t->insertion / double(t->iterations),
                 max_subdomain_change(before, q));
@@ -117,7 +117,7 @@ std::enable_if_t<BODT::internal::Is_c3t3<C3T3>::value> list_worst(const C3T3& c3
   std::vector<std::pair<double, typename C3T3::Cell_handle>> cells;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
   {
-    const auto mm = BODT::min_max_dihedral_angle(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()),
+    const auto mm = BODT::internal::min_max_dihedral_angle(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()),
                                                  cp(c->vertex(2)->point()), cp(c->vertex(3)->point()));
     cells.emplace_back(std::min(mm.first, 180 - mm.second), c);
   }
@@ -138,9 +138,9 @@ std::enable_if_t<BODT::internal::Is_c3t3<C3T3>::value> list_worst(const C3T3& c3
     }
     const auto p0 = cp(c->vertex(0)->point()), p1 = cp(c->vertex(1)->point()), p2 = cp(c->vertex(2)->point()),
                p3 = cp(c->vertex(3)->point());
-    const auto mm = BODT::min_max_dihedral_angle(p0, p1, p2, p3);
+    const auto mm = BODT::internal::min_max_dihedral_angle(p0, p1, p2, p3);
     std::printf("|   | worst %zu: %.2f / %.2f, %s, %d faces and %d vertices on the boundary (dimensions %s) | | | | | | | | | | |\n",
-                k + 1, mm.first, mm.second, BODT::name(BODT::classify_bad_tet(p0, p1, p2, p3, shapes).shape), faces,
+                k + 1, mm.first, mm.second, BODT::internal::name(BODT::internal::classify_bad_tet(p0, p1, p2, p3, shapes).shape), faces,
                 vertices, dims.c_str());
   }
 }

@@ -74,10 +74,10 @@ int main(int argc, char** argv)
     }
     // The checks every reader ends with (check_and_orient), timed alone.
     Tet_mesh copy = back;
-    CGAL::BODT_3::Tet_mesh_source source;
+    CGAL::BODT_3::internal::Tet_mesh_source source;
     source.file = file.string();
     t = std::chrono::steady_clock::now();
-    CGAL::BODT_3::check_and_orient(copy, source, warnings, format_threads);
+    CGAL::BODT_3::internal::check_and_orient(copy, source, warnings, format_threads);
     const double check = seconds_since(t);
     const double mb = static_cast<double>(bytes) / 1e6;
     std::printf("| %s | %.1f | %.2f | %.0f | %.2f | %.0f | %.2f | %.0f |\n", name, mb, write, mb / write, read,

@@ -36,10 +36,10 @@ int main(int argc, char** argv)
       std::size_t surface = 0, false_features = 0, curve = 0, missed = 0, corners = 0, missed_corners = 0;
       for(auto& input : inputs)
       {
-        BODT::C3t3_adapter<C3t3> labels(input.c3t3);
-        BODT::Flat_view<BODT::C3t3_adapter<C3t3>> view(labels);
-        const BODT::Feature_hints truth = BODT::c3t3_feature_hints(input.c3t3, view);
-        BODT::Classification_options opt;
+        BODT::internal::C3t3_adapter<C3t3> adapter(input.c3t3);
+        BODT::internal::Flat_view<BODT::internal::C3t3_adapter<C3t3>> view(adapter);
+        const BODT::internal::Feature_hints truth = BODT::internal::c3t3_feature_hints(input.c3t3, view);
+        BODT::internal::Classification_options opt;
         opt.tensor_voting.edge_ratio = edge;
         opt.tensor_voting.corner_ratio = corner;
         opt.tensor_voting.angle_weighted = angle_weighted;
@@ -48,28 +48,28 @@ int main(int argc, char** argv)
         auto& mesh = view.mesh();
         for(std::size_t c = 0; c < mesh.cells.size(); ++c)
           if(mesh.in_mesh[c]) mesh.subdomain[c] = 1;
-        const auto classification = BODT::classify_vertices(mesh, BODT::Feature_hints(), opt);
+        const auto classification = BODT::internal::classify_vertices(mesh, BODT::internal::Feature_hints(), opt);
         for(std::size_t v = 0; v < classification.kind.size(); ++v)
         {
           // Only the outer boundary: vertices with boundary facets.
           if(mesh.boundary_begin[v + 1] == mesh.boundary_begin[v]) continue;
           const int dim = truth.dimension[v];
-          const BODT::Vertex_kind k = classification.kind[v];
+          const BODT::internal::Vertex_kind k = classification.kind[v];
           if(dim == 2)
           {
             ++surface;
-            if(k != BODT::Vertex_kind::surface) ++false_features;
+            if(k != BODT::internal::Vertex_kind::surface) ++false_features;
           }
           else if(dim == 1 && input.name != name(Shape::two_subdomains))
           {
             // (The junction circle of two_subdomains is no sharp feature of the ball.)
             ++curve;
-            if(k == BODT::Vertex_kind::surface) ++missed;
+            if(k == BODT::internal::Vertex_kind::surface) ++missed;
           }
           else if(dim == 0)
           {
             ++corners;
-            if(k != BODT::Vertex_kind::fixed) ++missed_corners;
+            if(k != BODT::internal::Vertex_kind::fixed) ++missed_corners;
           }
         }
       }

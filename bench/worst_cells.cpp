@@ -57,7 +57,7 @@ void worst(const C3t3& c3t3, std::size_t count)
   {
     double lo, hi;
     int on_boundary, boundary_facets;
-    BODT::Bad_tet_shape shape;
+    BODT::internal::Bad_tet_shape shape;
   };
   std::vector<Row> rows;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
@@ -66,7 +66,7 @@ void worst(const C3t3& c3t3, std::size_t count)
     const Point b = c->vertex(1)->point().point();
     const Point d = c->vertex(2)->point().point();
     const Point e = c->vertex(3)->point().point();
-    const auto cs = BODT::dihedral_cosines(a, b, d, e);
+    const auto cs = BODT::internal::dihedral_cosines(a, b, d, e);
     double lo = 180, hi = 0;
     for(double x : cs)
     {
@@ -74,7 +74,7 @@ void worst(const C3t3& c3t3, std::size_t count)
       lo = std::min(lo, ang);
       hi = std::max(hi, ang);
     }
-    Row r{lo, hi, 0, 0, BODT::Bad_tet_shape::good};
+    Row r{lo, hi, 0, 0, BODT::internal::Bad_tet_shape::good};
     for(int k = 0; k < 4; ++k)
     {
       if(c3t3.in_dimension(c->vertex(k)) < 3) ++r.on_boundary;
@@ -83,14 +83,14 @@ void worst(const C3t3& c3t3, std::size_t count)
     BODT::Bad_tet_options bo;
     bo.small_angle = 25;
     bo.large_angle = 135;
-    r.shape = BODT::classify_bad_tet(a, b, d, e, bo).shape;
+    r.shape = BODT::internal::classify_bad_tet(a, b, d, e, bo).shape;
     rows.push_back(r);
   }
   auto print = [&](const char* title) {
     std::printf("%s\n", title);
     for(std::size_t i = 0; i < std::min(count, rows.size()); ++i)
       std::printf("  %6.2f %6.2f  boundary vertices %d facets %d  %s\n", rows[i].lo, rows[i].hi, rows[i].on_boundary,
-                  rows[i].boundary_facets, BODT::name(rows[i].shape));
+                  rows[i].boundary_facets, BODT::internal::name(rows[i].shape));
   };
   std::sort(rows.begin(), rows.end(), [](const Row& x, const Row& y) { return x.lo < y.lo; });
   print("smallest angles:");

@@ -2,11 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The compiled part of the Python module `bodt`: NumPy arrays in, the same C++
-// entry point as `bodt smooth` (CGAL::BODT_3::smooth on a Tet_mesh), NumPy arrays
-// and the JSON report out. bodt/__init__.py adds meshio meshes and the dict.
+// entry points as `bodt smooth` (CGAL::BODT_3::smooth on a Tet_mesh) and `bodt
+// quality`, NumPy arrays and the JSON reports out. bodt/__init__.py adds meshio
+// meshes, the dicts and the documentation.
+
+#include "cli/feature_angles.h"
+#include "report/json_report.h"
 
 #include <CGAL/BODT_3/internal/Mesh/check_tet_mesh.h>
-#include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
@@ -14,6 +17,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -69,56 +73,115 @@ std::vector<int> labels_of(const py::object& given, std::size_t n, const char* n
   return out;
 }
 
+// A keyword option of smooth(): its name and how it sets the options.
+struct Option
+{
+  const char* name;
+  void (*set)(BODT::Smoothing_options&, py::handle);
+};
+
+// Degrees in (0, 90], the range of the feature and corner angles (cli/feature_angles.h).
+double feature_angle_of(py::handle v, const char* name)
+{
+  const double a = v.cast<double>();
+  if(!(a > 0 && a <= 90)) throw py::value_error(std::string(name) + " must be an angle above 0 and at most 90 degrees");
+  return a;
+}
+
+void set_iterations(BODT::Smoothing_options& o, py::handle v)
+{
+  const long long n = v.cast<long long>();
+  if(n < 0) throw py::value_error("max_iteration_number must not be negative");
+  o.max_iteration_number = static_cast<std::size_t>(n);
+}
+
+// Every option smooth() accepts; bodt/__init__.py documents each one (a test checks).
+const std::vector<Option>& smoothing_options()
+{
+  static const std::vector<Option> options = {
+      {"max_iteration_number", set_iterations},
+      {"iterations", set_iterations},
+      {"time_limit", [](BODT::Smoothing_options& o, py::handle v) { o.time_limit = v.cast<double>(); }},
+      {"convergence", [](BODT::Smoothing_options& o, py::handle v) { o.convergence = v.cast<double>(); }},
+      {"method",
+       [](BODT::Smoothing_options& o, py::handle v) {
+         const std::string m = v.cast<std::string>();
+         if(m == "bodt") o.moving_vertices = BODT::Moving_vertices::ALL;
+         else if(m == "odt") o.moving_vertices = BODT::Moving_vertices::INTERIOR;
+         else if(m == "flips") o.moving_vertices = BODT::Moving_vertices::NONE;
+         else if(m == "nodt") o.smoothing_method = BODT::Smoothing_method::NODT;
+         else throw py::value_error("method must be 'bodt', 'odt', 'flips' or 'nodt', not '" + m + "'");
+       }},
+      {"preserve_features", [](BODT::Smoothing_options& o, py::handle v) { o.preserve_features = v.cast<bool>(); }},
+      {"quality_guard", [](BODT::Smoothing_options& o, py::handle v) { o.quality_guard = v.cast<bool>(); }},
+      {"topology_optimization",
+       [](BODT::Smoothing_options& o, py::handle v) { o.topology_optimization = v.cast<bool>(); }},
+      {"vertex_insertion", [](BODT::Smoothing_options& o, py::handle v) { o.vertex_insertion = v.cast<bool>(); }},
+      {"max_vertex_insertions",
+       [](BODT::Smoothing_options& o, py::handle v) { o.max_vertex_insertions = v.cast<long long>(); }},
+      {"max_min_threshold", [](BODT::Smoothing_options& o, py::handle v) { o.max_min_threshold = v.cast<double>(); }},
+      {"largest_angle_phase",
+       [](BODT::Smoothing_options& o, py::handle v) { o.largest_angle_phase = v.cast<bool>(); }},
+      {"largest_angle_threshold",
+       [](BODT::Smoothing_options& o, py::handle v) { o.largest_angle_threshold = v.cast<double>(); }},
+      {"threads",
+       [](BODT::Smoothing_options& o, py::handle v) {
+         o.threads = v.cast<int>();
+         if(o.threads < 0) throw py::value_error("threads must be 0 (every core) or more");
+       }},
+      {"feature_edge_ratio",
+       [](BODT::Smoothing_options& o, py::handle v) { o.tensor_voting.edge_ratio = v.cast<double>(); }},
+      {"feature_corner_ratio",
+       [](BODT::Smoothing_options& o, py::handle v) { o.tensor_voting.corner_ratio = v.cast<double>(); }},
+      {"feature_angle",
+       [](BODT::Smoothing_options& o, py::handle v) {
+         o.tensor_voting.edge_ratio = bodt_cli::edge_ratio_of_angle(feature_angle_of(v, "feature_angle"));
+       }},
+      {"corner_angle",
+       [](BODT::Smoothing_options& o, py::handle v) {
+         o.tensor_voting.corner_ratio = bodt_cli::corner_ratio_of_angle(feature_angle_of(v, "corner_angle"));
+       }},
+  };
+  return options;
+}
+
 BODT::Smoothing_options options_of(const py::dict& given)
 {
   BODT::Smoothing_options o;
+  bool angle = false, ratio = false;
   for(const auto& item : given)
   {
     const std::string key = item.first.cast<std::string>();
-    const py::handle v = item.second;
-    if(key == "max_iteration_number" || key == "iterations")
-    {
-      const long long n = v.cast<long long>();
-      if(n < 0) throw py::value_error(key + " must not be negative");
-      o.max_iteration_number = static_cast<std::size_t>(n);
-    }
-    else if(key == "time_limit") o.time_limit = v.cast<double>();
-    else if(key == "convergence") o.convergence = v.cast<double>();
-    else if(key == "method")
-    {
-      const std::string m = v.cast<std::string>();
-      if(m == "bodt") o.moving_vertices = BODT::Moving_vertices::ALL;
-      else if(m == "odt") o.moving_vertices = BODT::Moving_vertices::INTERIOR;
-      else if(m == "flips") o.moving_vertices = BODT::Moving_vertices::NONE;
-      else if(m == "nodt") o.smoothing_method = BODT::Smoothing_method::NODT;
-      else throw py::value_error("method must be 'bodt', 'odt', 'flips' or 'nodt', not '" + m + "'");
-    }
-    else if(key == "preserve_features") o.preserve_features = v.cast<bool>();
-    else if(key == "quality_guard") o.quality_guard = v.cast<bool>();
-    else if(key == "topology_optimization") o.topology_optimization = v.cast<bool>();
-    else if(key == "vertex_insertion") o.vertex_insertion = v.cast<bool>();
-    else if(key == "max_vertex_insertions") o.max_vertex_insertions = v.cast<long long>();
-    else if(key == "max_min_threshold") o.max_min_threshold = v.cast<double>();
-    else if(key == "largest_angle_phase") o.largest_angle_phase = v.cast<bool>();
-    else if(key == "largest_angle_threshold") o.largest_angle_threshold = v.cast<double>();
-    else if(key == "threads")
-    {
-      o.threads = v.cast<int>();
-      if(o.threads < 0) throw py::value_error("threads must be 0 (every core) or more");
-    }
-    else if(key == "feature_edge_ratio") o.tensor_voting.edge_ratio = v.cast<double>();
-    else if(key == "feature_corner_ratio") o.tensor_voting.corner_ratio = v.cast<double>();
-    else throw py::type_error("smooth() got an unexpected option '" + key + "'");
+    const auto& table = smoothing_options();
+    const auto it = std::find_if(table.begin(), table.end(), [&](const Option& opt) { return key == opt.name; });
+    if(it == table.end()) throw py::type_error("smooth() got an unexpected option '" + key + "'");
+    it->set(o, item.second);
+    angle = angle || key == "feature_angle" || key == "corner_angle";
+    ratio = ratio || key == "feature_edge_ratio" || key == "feature_corner_ratio";
   }
+  if(angle && ratio)
+    throw py::type_error("give the feature thresholds as angles (feature_angle, corner_angle) or as ratios "
+                         "(feature_edge_ratio, feature_corner_ratio), not both");
   return o;
 }
 
-// Keeps the statistics of every sweep for the report.
+// Keeps the statistics of every sweep for the report, and shows each to the
+// caller's `progress` (None or a callable taking the sweep's JSON). The smoothing
+// runs without the GIL; it is taken back here, where Ctrl-C and an exception of
+// `progress` stop the run.
 struct Recorder
 {
   std::vector<BODT::Iteration_stats> iterations;
+  py::handle progress;   // borrowed: the caller's argument outlives the run
+
   void after_classification(const BODT::Smoothing_result&) {}
-  void after_iteration(const BODT::Iteration_stats& s) { iterations.push_back(s); }
+  void after_iteration(const BODT::Iteration_stats& s)
+  {
+    iterations.push_back(s);
+    py::gil_scoped_acquire held;
+    if(PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if(!progress.is_none()) progress(nlohmann::json(s).dump());
+  }
 };
 
 template <std::size_t columns>
@@ -139,11 +202,12 @@ Index_array to_array(const std::vector<int>& v)
   return a;
 }
 
-py::tuple smooth_arrays(const Real_array& points, const Index_array& tets, const py::object& labels,
-                        const py::object& triangles, const py::object& triangle_labels, const py::object& edges,
-                        const py::dict& options)
+// The mesh given as arrays, with the checks the file readers make ("mesh" stands
+// for the file name in messages); what they warn about goes to `warnings`.
+BODT::Tet_mesh checked_mesh(const Real_array& points, const Index_array& tets, const py::object& labels,
+                            const py::object& triangles, const py::object& triangle_labels, const py::object& edges,
+                            std::ostream& warnings)
 {
-  BODT::Smoothing_options opt = options_of(options);
   if(points.ndim() != 2 || points.shape(1) != 3) throw py::value_error("points must be an array of shape (n, 3)");
   BODT::Tet_mesh mesh;
   const std::size_t n = static_cast<std::size_t>(points.shape(0));
@@ -158,25 +222,35 @@ py::tuple smooth_arrays(const Real_array& points, const Index_array& tets, const
   mesh.triangle_labels = labels_of(triangle_labels, mesh.triangles.size(), "triangle_labels", 1);
   if(!edges.is_none()) mesh.edges = index_rows<2>(edges.cast<Index_array>(), "edges", n);
   mesh.edge_labels.assign(mesh.edges.size(), 1);
-
-  // The checks the file readers make; "mesh" stands for the file name in messages.
-  std::ostringstream warnings;
-  BODT::Tet_mesh_source source;
+  BODT::internal::Tet_mesh_source source;
   source.file = "mesh";
   try
   {
-    BODT::check_and_orient(mesh, source, warnings);
+    BODT::internal::check_and_orient(mesh, source, warnings);
   }
   catch(const BODT::Mesh_io_error& e)
   {
     throw py::value_error(e.what());
   }
+  return mesh;
+}
+
+py::tuple smooth_arrays(const Real_array& points, const Index_array& tets, const py::object& labels,
+                        const py::object& triangles, const py::object& triangle_labels, const py::object& edges,
+                        const py::dict& options, const py::object& progress)
+{
+  const BODT::Smoothing_options opt = options_of(options);
+  if(!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw py::type_error("progress must be a function of one argument, or None");
+  std::ostringstream warnings;
+  BODT::Tet_mesh mesh = checked_mesh(points, tets, labels, triangles, triangle_labels, edges, warnings);
   const BODT::Quality_report before = BODT::mesh_quality(mesh);
   if(before.inverted_tets > 0)
     throw py::value_error("mesh: " + std::to_string(before.inverted_tets) +
                           " tetrahedra are flat; smoothing needs a valid mesh");
 
   Recorder recorder;
+  recorder.progress = progress;
   BODT::Smoothing_result result;
   {
     py::gil_scoped_release unlocked;
@@ -193,14 +267,50 @@ py::tuple smooth_arrays(const Real_array& points, const Index_array& tets, const
                         to_array(mesh.triangle_labels), to_array(mesh.edges), report, warnings.str());
 }
 
+py::tuple quality_arrays(const Real_array& points, const Index_array& tets, const py::object& labels,
+                         const py::dict& options)
+{
+  BODT::Quality_options q;
+  for(const auto& item : options)
+  {
+    const std::string key = item.first.cast<std::string>();
+    if(key == "bins")
+    {
+      q.histogram_bins = item.second.cast<int>();
+      if(q.histogram_bins < 1 || q.histogram_bins > 18000) throw py::value_error("bins must be from 1 to 18000");
+    }
+    else if(key == "small_angle") q.small_angle = item.second.cast<double>();
+    else if(key == "large_angle") q.large_angle = item.second.cast<double>();
+    else if(key == "threads")
+    {
+      q.threads = item.second.cast<int>();
+      if(q.threads < 0) throw py::value_error("threads must be 0 (every core) or more");
+    }
+    else throw py::type_error("quality() got an unexpected option '" + key + "'");
+  }
+  std::ostringstream warnings;
+  const BODT::Tet_mesh mesh = checked_mesh(points, tets, labels, py::none(), py::none(), py::none(), warnings);
+  return py::make_tuple(BODT::to_json(BODT::mesh_quality(mesh, q)), warnings.str());
+}
+
+py::list option_names()
+{
+  py::list names;
+  for(const Option& o : smoothing_options()) names.append(o.name);
+  return names;
+}
+
 } // namespace
 
 PYBIND11_MODULE(_bodt, m)
 {
   m.doc() = "B-ODT tetrahedral mesh smoothing (the compiled part of the module bodt)";
   m.def("smooth_arrays", &smooth_arrays, py::arg("points"), py::arg("tets"), py::arg("labels"),
-        py::arg("triangles"), py::arg("triangle_labels"), py::arg("edges"), py::arg("options"),
+        py::arg("triangles"), py::arg("triangle_labels"), py::arg("edges"), py::arg("options"), py::arg("progress"),
         "Smooths the mesh given as arrays; returns (points, tets, labels, triangles, triangle_labels, edges, "
-        "report JSON, warnings).");
+        "report JSON, warnings). `progress` (None or a callable) gets each sweep's statistics as JSON.");
+  m.def("quality_arrays", &quality_arrays, py::arg("points"), py::arg("tets"), py::arg("labels"), py::arg("options"),
+        "Measures the mesh given as arrays; returns (quality report JSON, warnings).");
+  m.def("option_names", &option_names, "The names of the options smooth_arrays takes.");
   m.attr("__version__") = BODT_VERSION;
 }

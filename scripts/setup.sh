@@ -7,6 +7,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 packages=(build-essential cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev
           libgmp-dev libmpfr-dev libtbb-dev libgtest-dev googletest zlib1g-dev chromium
           libcli11-dev nlohmann-json3-dev pybind11-dev python3-dev python3-numpy python3-meshio
+          python3-pip python3-setuptools python3-wheel python3-venv   # pip install . (setup.py)
           gmsh tetgen)   # the I/O tests read files these tools write
 missing=()
 for p in "${packages[@]}"; do

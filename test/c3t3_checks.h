@@ -17,7 +17,7 @@ using File_c3t3 = CGAL::BODT_3::Tet_mesh_c3t3;
 
 inline CGAL::BODT_3::Tet_mesh::Point bare(const File_c3t3& c3t3, File_c3t3::Vertex_handle v)
 {
-  return CGAL::BODT_3::bare_point(c3t3.triangulation(), v);
+  return CGAL::BODT_3::internal::bare_point(c3t3.triangulation(), v);
 }
 
 // The triangulation is combinatorially valid, every finite cell is positively

@@ -600,7 +600,7 @@ TEST(C3t3_conversion, SameComplexAndSameRefusalOnAnyNumberOfThreads)
 {
   const Tet_mesh grid = bodt_test::cube_grid(16, [](int i, int, int) { return i < 8 ? 1 : 2; });
   auto convert = [](const Tet_mesh& m, int threads, BODT::Tet_mesh_c3t3& c) {
-    const BODT::Tet_face_matching faces(m.tets, m.points.size(), threads);
+    const BODT::internal::Tet_face_matching faces(m.tets, m.points.size(), threads);
     BODT::tet_mesh_to_c3t3(m, c, "grid.mesh", nullptr, &faces);
   };
   BODT::Tet_mesh_c3t3 one, four;

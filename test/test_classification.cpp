@@ -26,9 +26,9 @@ namespace BODT = CGAL::BODT_3;
 
 namespace {
 
-BODT::Flat_mesh<K> smoothing_mesh(const BODT::Tet_mesh& m)
+BODT::internal::Flat_mesh<K> smoothing_mesh(const BODT::Tet_mesh& m)
 {
-  BODT::Flat_mesh<K> s;
+  BODT::internal::Flat_mesh<K> s;
   s.points = m.points;
   s.cells = m.tets;
   s.in_mesh.assign(m.tets.size(), 1);
@@ -47,9 +47,9 @@ int count_on_box(const BODT::Tet_mesh& m, int v, int n)
 
 // The boundary star of x0 = origin on the plane z = 0 (ring counterclockwise
 // seen from above) bent along the x axis by `fold` degrees: a straight edge.
-BODT::Vertex_star<K> folded_star(double fold_deg, int fan_left, int fan_right)
+BODT::internal::Vertex_star<K> folded_star(double fold_deg, int fan_left, int fan_right)
 {
-  BODT::Vertex_star<K> star;
+  BODT::internal::Vertex_star<K> star;
   star.x0 = Point(0, 0, 0);
   const double f = fold_deg * CGAL_PI / 180;
   std::vector<Point> ring;
@@ -73,16 +73,16 @@ BODT::Vertex_star<K> folded_star(double fold_deg, int fan_left, int fan_right)
 
 TEST(TensorVoting, FlatStarIsSurface)
 {
-  const auto vote = BODT::tensor_vote(folded_star(0, 3, 5), BODT::Tensor_voting_options());
-  EXPECT_EQ(vote.kind, BODT::Voted_kind::surface);
+  const auto vote = BODT::internal::tensor_vote(folded_star(0, 3, 5), BODT::Tensor_voting_options());
+  EXPECT_EQ(vote.kind, BODT::internal::Voted_kind::surface);
 }
 
 TEST(TensorVoting, SharpEdgeIsFeatureAlongTheEdge)
 {
   for(double fold : {30.0, 60.0, 90.0, 120.0})
   {
-    const auto vote = BODT::tensor_vote(folded_star(fold, 2, 7), BODT::Tensor_voting_options());
-    EXPECT_EQ(vote.kind, BODT::Voted_kind::feature) << fold;
+    const auto vote = BODT::internal::tensor_vote(folded_star(fold, 2, 7), BODT::Tensor_voting_options());
+    EXPECT_EQ(vote.kind, BODT::internal::Voted_kind::feature) << fold;
     EXPECT_NEAR(std::abs(vote.direction.x()), 1.0, 1e-12) << fold;
   }
 }
@@ -96,9 +96,9 @@ TEST(TensorVoting, AngleWeightsMakeTheRatioDependOnTheDihedralAngleOnly)
     {
       const double expected = std::pow(std::tan(fold * CGAL_PI / 360), 2);
       opt.edge_ratio = expected * 0.999;
-      EXPECT_EQ(BODT::tensor_vote(folded_star(fold, fans.first, fans.second), opt).kind, BODT::Voted_kind::feature);
+      EXPECT_EQ(BODT::internal::tensor_vote(folded_star(fold, fans.first, fans.second), opt).kind, BODT::internal::Voted_kind::feature);
       opt.edge_ratio = expected * 1.001;
-      EXPECT_EQ(BODT::tensor_vote(folded_star(fold, fans.first, fans.second), opt).kind, BODT::Voted_kind::surface);
+      EXPECT_EQ(BODT::internal::tensor_vote(folded_star(fold, fans.first, fans.second), opt).kind, BODT::internal::Voted_kind::surface);
     }
 }
 
@@ -107,15 +107,15 @@ TEST(Classification, BoxCornersEdgesFacesByTensorVoting)
   const int n = 3;
   const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
   const auto s = smoothing_mesh(m);
-  const auto classification = BODT::classify_vertices(s, BODT::Feature_hints(), BODT::Classification_options());
+  const auto classification = BODT::internal::classify_vertices(s, BODT::internal::Feature_hints(), BODT::internal::Classification_options());
   EXPECT_TRUE(classification.used_tensor_voting);
   for(std::size_t v = 0; v < m.points.size(); ++v)
   {
     const int on = count_on_box(m, static_cast<int>(v), n);
-    const BODT::Vertex_kind expected = on == 0   ? BODT::Vertex_kind::interior
-                                       : on == 1 ? BODT::Vertex_kind::surface
-                                       : on == 2 ? BODT::Vertex_kind::feature
-                                                 : BODT::Vertex_kind::fixed;
+    const BODT::internal::Vertex_kind expected = on == 0   ? BODT::internal::Vertex_kind::interior
+                                       : on == 1 ? BODT::internal::Vertex_kind::surface
+                                       : on == 2 ? BODT::internal::Vertex_kind::feature
+                                                 : BODT::internal::Vertex_kind::fixed;
     EXPECT_EQ(classification.kind[v], expected) << "vertex " << v << " " << m.points[v];
   }
 }
@@ -126,32 +126,32 @@ TEST(Classification, FeatureHintsAddToTheGeometryAndInteriorOnlyFixesTheBoundary
   const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
   const auto s = smoothing_mesh(m);
   // One feature edge chain along the bottom front edge: (0,0,0)-(1,0,0)-(2,0,0).
-  BODT::Feature_hints hints;
+  BODT::internal::Feature_hints hints;
   hints.feature_edges = {{0, 1}, {1, 2}};
-  const auto classification = BODT::classify_vertices(s, hints, BODT::Classification_options());
+  const auto classification = BODT::internal::classify_vertices(s, hints, BODT::internal::Classification_options());
   EXPECT_TRUE(classification.used_tensor_voting);
-  EXPECT_EQ(classification.kind[0], BODT::Vertex_kind::fixed);     // one feature edge: a corner
-  EXPECT_EQ(classification.kind[1], BODT::Vertex_kind::feature);   // two: on the curve
+  EXPECT_EQ(classification.kind[0], BODT::internal::Vertex_kind::fixed);     // one feature edge: a corner
+  EXPECT_EQ(classification.kind[1], BODT::internal::Vertex_kind::feature);   // two: on the curve
   EXPECT_EQ(std::set<int>(classification.curve_neighbors[1].begin(), classification.curve_neighbors[1].end()),
             (std::set<int>{0, 2}));
-  EXPECT_EQ(classification.kind[2], BODT::Vertex_kind::fixed);
+  EXPECT_EQ(classification.kind[2], BODT::internal::Vertex_kind::fixed);
   // The box's other edges and corners, which the hints do not mention, come from the geometry.
   for(std::size_t v = 3; v < m.points.size(); ++v)
   {
     const int on = count_on_box(m, static_cast<int>(v), n);
-    const BODT::Vertex_kind expected = on == 0   ? BODT::Vertex_kind::interior
-                                       : on == 1 ? BODT::Vertex_kind::surface
-                                       : on == 2 ? BODT::Vertex_kind::feature
-                                                 : BODT::Vertex_kind::fixed;
+    const BODT::internal::Vertex_kind expected = on == 0   ? BODT::internal::Vertex_kind::interior
+                                       : on == 1 ? BODT::internal::Vertex_kind::surface
+                                       : on == 2 ? BODT::internal::Vertex_kind::feature
+                                                 : BODT::internal::Vertex_kind::fixed;
     EXPECT_EQ(classification.kind[v], expected) << "vertex " << v << " " << m.points[v];
   }
 
-  BODT::Classification_options interior_only;
+  BODT::internal::Classification_options interior_only;
   interior_only.move_boundary = false;
-  const auto odt = BODT::classify_vertices(s, BODT::Feature_hints(), interior_only);
+  const auto odt = BODT::internal::classify_vertices(s, BODT::internal::Feature_hints(), interior_only);
   for(std::size_t v = 0; v < m.points.size(); ++v)
-    EXPECT_EQ(odt.kind[v], count_on_box(m, static_cast<int>(v), n) == 0 ? BODT::Vertex_kind::interior
-                                                                        : BODT::Vertex_kind::fixed);
+    EXPECT_EQ(odt.kind[v], count_on_box(m, static_cast<int>(v), n) == 0 ? BODT::internal::Vertex_kind::interior
+                                                                        : BODT::internal::Vertex_kind::fixed);
 }
 
 // A C3T3's dimensions come from the domain Mesh_3 meshed: they replace the geometry.
@@ -159,26 +159,26 @@ TEST(Classification, DimensionsReplaceTheGeometry)
 {
   const int n = 2;
   const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
-  BODT::Feature_hints hints;
+  BODT::internal::Feature_hints hints;
   for(std::size_t v = 0; v < m.points.size(); ++v)
     hints.dimension.push_back(count_on_box(m, static_cast<int>(v), n) == 0 ? 3 : 2);
-  const auto classification = BODT::classify_vertices(smoothing_mesh(m), hints, BODT::Classification_options());
+  const auto classification = BODT::internal::classify_vertices(smoothing_mesh(m), hints, BODT::internal::Classification_options());
   EXPECT_FALSE(classification.used_tensor_voting);
   for(std::size_t v = 0; v < m.points.size(); ++v)
-    EXPECT_EQ(classification.kind[v], hints.dimension[v] == 3 ? BODT::Vertex_kind::interior
-                                                              : BODT::Vertex_kind::surface);
+    EXPECT_EQ(classification.kind[v], hints.dimension[v] == 3 ? BODT::internal::Vertex_kind::interior
+                                                              : BODT::internal::Vertex_kind::surface);
 }
 
 namespace {
 
 // The kind a vertex must get from the number of planes (faces of the box, an
 // interface) it lies on: none inside, one on a face, two on an edge, three at a corner.
-BODT::Vertex_kind kind_from_planes(int planes)
+BODT::internal::Vertex_kind kind_from_planes(int planes)
 {
-  return planes == 0 ? BODT::Vertex_kind::interior
-         : planes == 1 ? BODT::Vertex_kind::surface
-         : planes == 2 ? BODT::Vertex_kind::feature
-                       : BODT::Vertex_kind::fixed;
+  return planes == 0 ? BODT::internal::Vertex_kind::interior
+         : planes == 1 ? BODT::internal::Vertex_kind::surface
+         : planes == 2 ? BODT::internal::Vertex_kind::feature
+                       : BODT::internal::Vertex_kind::fixed;
 }
 
 // Checks that every feature vertex's curve neighbours, where given, lie on its line:
@@ -188,7 +188,7 @@ void expect_neighbours_on_the_line(const BODT::Tet_mesh& m, const BODT::Vertex_c
 {
   for(std::size_t v = 0; v < m.points.size(); ++v)
   {
-    if(c.kind[v] != BODT::Vertex_kind::feature || c.curve_neighbors[v][0] < 0) continue;
+    if(c.kind[v] != BODT::internal::Vertex_kind::feature || c.curve_neighbors[v][0] < 0) continue;
     for(int w : c.curve_neighbors[v])
     {
       const auto d = m.points[w] - m.points[v];
@@ -207,8 +207,8 @@ TEST(Classification, PatchesNeverHideASharpEdge)
 {
   const int n = 4, mid = 2;
   const BODT::Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int k) { return k < mid ? 1 : 2; });
-  const BODT::Flat_mesh<K> s = smoothing_mesh(m);
-  BODT::Feature_hints hints;
+  const BODT::internal::Flat_mesh<K> s = smoothing_mesh(m);
+  BODT::internal::Feature_hints hints;
   for(const auto& t : m.tets)
     for(int i = 0; i < 4; ++i)
     {
@@ -223,14 +223,14 @@ TEST(Classification, PatchesNeverHideASharpEdge)
       }
       if(box || on_mid) hints.facet_patches.push_back({f, box ? 1 : 5});
     }
-  const auto c = BODT::classify_vertices(s, hints, BODT::Classification_options());
+  const auto c = BODT::internal::classify_vertices(s, hints, BODT::internal::Classification_options());
   auto planes = [&](int v) { return count_on_box(m, v, n) + (m.points[v].z() == mid ? 1 : 0); };
   for(std::size_t v = 0; v < m.points.size(); ++v)
     EXPECT_EQ(c.kind[v], kind_from_planes(planes(static_cast<int>(v)))) << "vertex " << v << " " << m.points[v];
   expect_neighbours_on_the_line(m, c, planes);
   // The rim of the interface on the cube's faces: a curve of both surfaces.
   const int rim = bodt_test::grid_index(n, 0, 1, mid);
-  ASSERT_EQ(c.kind[rim], BODT::Vertex_kind::feature);
+  ASSERT_EQ(c.kind[rim], BODT::internal::Vertex_kind::feature);
   EXPECT_EQ(std::set<int>(c.curve_neighbors[rim].begin(), c.curve_neighbors[rim].end()),
             (std::set<int>{bodt_test::grid_index(n, 0, 0, mid), bodt_test::grid_index(n, 0, 2, mid)}));
 }
@@ -244,7 +244,7 @@ TEST(Classification, EdgesAndCornersOfAnInclusionAreFound)
   auto inside = [](int i) { return i >= 1 && i < 3; };
   const BODT::Tet_mesh m =
       bodt_test::cube_grid(n, [&](int i, int j, int k) { return inside(i) && inside(j) && inside(k) ? 2 : 1; });
-  const auto c = BODT::classify_vertices(smoothing_mesh(m), BODT::Feature_hints(), BODT::Classification_options());
+  const auto c = BODT::internal::classify_vertices(smoothing_mesh(m), BODT::internal::Feature_hints(), BODT::internal::Classification_options());
   EXPECT_TRUE(c.used_tensor_voting);
   auto planes = [&](int v) {
     const auto& p = m.points[v];
@@ -272,7 +272,7 @@ TEST(Classification, PinchedVertexIsFixed)
   // Two single cubes of tetrahedra sharing only the vertex (1,1,1).
   BODT::Tet_mesh m = bodt_test::cube_grid(2, [](int i, int j, int k) { return (i == j && j == k) ? 1 : 0; });
   const auto s = [&] {
-    BODT::Flat_mesh<K> sm;
+    BODT::internal::Flat_mesh<K> sm;
     sm.points = m.points;
     sm.cells = m.tets;
     for(int l : m.tet_labels) sm.in_mesh.push_back(l != 0);
@@ -280,9 +280,9 @@ TEST(Classification, PinchedVertexIsFixed)
     sm.build_incidences();
     return sm;
   }();
-  const auto classification = BODT::classify_vertices(s, BODT::Feature_hints(), BODT::Classification_options());
+  const auto classification = BODT::internal::classify_vertices(s, BODT::internal::Feature_hints(), BODT::internal::Classification_options());
   const int centre = (1 * 3 + 1) * 3 + 1;
-  EXPECT_EQ(classification.kind[centre], BODT::Vertex_kind::fixed);
+  EXPECT_EQ(classification.kind[centre], BODT::internal::Vertex_kind::fixed);
   EXPECT_EQ(classification.non_manifold, 1u);
 }
 

@@ -1,10 +1,12 @@
 // The command-line tool's behaviour: --version, a silent --quiet, output paths
 // refused before any work, reports that appear with the mesh, valid JSON whatever
-// the paths, --format, --iterations 0, the wording of `quality` and `compare`, and
-// the progress display.
+// the paths, --json on standard output, --format, --iterations 0, the feature and
+// corner angles, the wording of `quality` and `compare`, and the progress display.
+#include "cli/feature_angles.h"
 #include "cli/progress.h"
 
 #include <CGAL/BODT_3/IO/medit.h>
+#include <CGAL/BODT_3/internal/Classification/Tensor_voting.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 
 #include "test_support.h"
@@ -14,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <filesystem>
@@ -60,7 +63,8 @@ TEST(Cli, VersionAndHelp)
   EXPECT_EQ(out.rfind(std::string("bodt ") + BODT_VERSION, 0), 0u) << out;
   ASSERT_EQ(run_bodt("smooth --help", out), 0);
   for(const char* option : {"--method", "--no-flips", "--no-insertion", "--max-insertions", "--format", "--quiet",
-                            "--report", "--html", "--iterations", "--convergence"})
+                            "--report", "--html", "--iterations", "--convergence", "--feature-angle", "--corner-angle",
+                            "--cut", "--json"})
     EXPECT_NE(out.find(option), std::string::npos) << option;
   EXPECT_EQ(run_bodt("", out), 2);
   EXPECT_EQ(run_bodt("smooth", out), 2);
@@ -183,7 +187,7 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_GT(moved, 0u);
   for(const char* key : {"flips_2_3", "flips_3_2", "edge_removals", "multi_face_removals", "boundary_flips"})
     EXPECT_TRUE(r.at("topology").contains(key)) << key;
-  for(const char* key : {"spade_splits", "cap_splits", "sliver_splits", "undone", "vertices_added"})
+  for(const char* key : {"spade_splits", "wedge_splits", "cap_splits", "sliver_splits", "undone", "vertices_added"})
     EXPECT_TRUE(r.at("insertion").contains(key)) << key;
   for(const char* side : {"before", "after"})
   {
@@ -427,4 +431,241 @@ TEST(Cli, RefusalsOfTheConversionNameTheFile)
     EXPECT_NE(out.find("bodt smooth: error: " + in.string() + ": " + words), std::string::npos) << out;
     EXPECT_FALSE(fs::exists(dir / "out.mesh"));
   }
+}
+
+namespace {
+
+// Runs the tool; `out` gets its standard output alone, `err` its standard error.
+int run_bodt_apart(const std::string& args, std::string& out, std::string& err, const fs::path& dir)
+{
+  const fs::path o = dir / "stdout.txt", e = dir / "stderr.txt";
+  const int status = std::system((std::string(BODT_BINARY) + " " + args + " > " + q(o) + " 2> " + q(e)).c_str());
+  out = read_text(o);
+  err = read_text(e);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+} // namespace
+
+// --json prints on standard output the report --report writes, as one line, and
+// nothing else; the messages stay on standard error.
+TEST(Cli, JsonPrintsTheReportOnStandardOutput)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  std::string out, err;
+  ASSERT_EQ(run_bodt_apart("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --iterations 3 --json --report " +
+                               q(dir / "r.json"),
+                           out, err, dir),
+            0)
+      << out << err;
+  ASSERT_FALSE(out.empty());
+  EXPECT_EQ(out.find('\n'), out.size() - 1) << "one line";
+  const nlohmann::json printed = nlohmann::json::parse(out);
+  EXPECT_EQ(printed, nlohmann::json::parse(read_text(dir / "r.json")));
+  EXPECT_EQ(printed.at("options").at("max_iteration_number"), 3);
+  EXPECT_NE(err.find("interior"), std::string::npos) << "the classification goes to stderr: " << err;
+  EXPECT_EQ(err.find("min dihedral"), std::string::npos) << "no table with --json: " << err;
+  // Without --report too; and --quiet silences stderr, not the JSON asked for.
+  ASSERT_EQ(run_bodt_apart("smooth " + q(in) + " -o " + q(dir / "out2.mesh") + " --json --quiet", out, err, dir), 0);
+  EXPECT_EQ(err, "");
+  EXPECT_EQ(nlohmann::json::parse(out).at("output"), (dir / "out2.mesh").string());
+  // A failed run prints no JSON.
+  ASSERT_EQ(run_bodt_apart("smooth " + q(dir / "missing.mesh") + " -o " + q(dir / "out3.mesh") + " --json", out, err,
+                           dir),
+            1);
+  EXPECT_EQ(out, "");
+}
+
+namespace {
+
+// The boundary star of the origin: two flat half-planes meeting along the x axis,
+// their normals turning by `turn` degrees (test_classification.cpp's folded star).
+BODT::internal::Vertex_star<BODT::Tet_mesh::Kernel> folded_star(double turn)
+{
+  BODT::internal::Vertex_star<BODT::Tet_mesh::Kernel> star;
+  star.x0 = Point(0, 0, 0);
+  const double f = turn * CGAL_PI / 180;
+  std::vector<Point> ring;
+  for(int i = 0; i <= 3; ++i) ring.emplace_back(std::cos(CGAL_PI * i / 3), std::sin(CGAL_PI * i / 3), 0);
+  for(int i = 1; i < 5; ++i)
+  {
+    const double a = CGAL_PI + CGAL_PI * i / 5;
+    ring.emplace_back(std::cos(a), std::sin(a) * std::cos(f), std::sin(a) * std::sin(f));
+  }
+  for(std::size_t i = 0; i < ring.size(); ++i) star.boundary.push_back({ring[i], ring[(i + 1) % ring.size()]});
+  return star;
+}
+
+// The apex of a symmetric three-sided corner whose normals are `apart` degrees
+// apart: normals n_k at angle b from the z axis, 120 degrees apart around it, with
+// cos(apart) = 1 - 3/2 sin^2 b; side k lies between the edges it shares with its
+// neighbours, which run down from the apex.
+BODT::internal::Vertex_star<BODT::Tet_mesh::Kernel> corner_star(double apart)
+{
+  using Vector = BODT::Tet_mesh::Kernel::Vector_3;
+  const double b = std::asin(std::sqrt((1 - std::cos(apart * CGAL_PI / 180)) / 1.5));
+  std::vector<Vector> n;
+  for(int k = 0; k < 3; ++k)
+  {
+    const double t = 2 * CGAL_PI * k / 3;
+    n.emplace_back(std::sin(b) * std::cos(t), std::sin(b) * std::sin(t), std::cos(b));
+  }
+  BODT::internal::Vertex_star<BODT::Tet_mesh::Kernel> star;
+  star.x0 = Point(0, 0, 0);
+  auto edge = [&](int i, int j) {   // the downward direction shared by sides i and j
+    Vector e = CGAL::cross_product(n[i], n[j]);
+    return e.z() < 0 ? e : -e;
+  };
+  for(int k = 0; k < 3; ++k)
+  {
+    const Point a = CGAL::ORIGIN + edge(k, (k + 2) % 3), c = CGAL::ORIGIN + edge(k, (k + 1) % 3);
+    // Ordered so that (a - x0) x (c - x0) points along the side's outward normal.
+    if(CGAL::cross_product(a - CGAL::ORIGIN, c - CGAL::ORIGIN) * n[k] > 0)
+      star.boundary.push_back({a, c});
+    else
+      star.boundary.push_back({c, a});
+  }
+  return star;
+}
+
+} // namespace
+
+// The angles map to the ratios tensor voting compares: an edge whose sides turn by
+// a bit more than --feature-angle is a feature, by a bit less it is not; the same
+// for corners and --corner-angle. And the defaults are the library's ratios.
+TEST(FeatureAngles, MapToTheRatiosTensorVotingUses)
+{
+  for(double angle : {10.0, 25.0, 40.0, 60.0, 85.0})
+  {
+    BODT::Tensor_voting_options o;
+    o.edge_ratio = bodt_cli::edge_ratio_of_angle(angle);
+    o.corner_ratio = 1;
+    EXPECT_EQ(BODT::internal::tensor_vote(folded_star(angle * 1.001), o).kind, BODT::internal::Voted_kind::feature) << angle;
+    EXPECT_EQ(BODT::internal::tensor_vote(folded_star(angle * 0.999), o).kind, BODT::internal::Voted_kind::surface) << angle;
+    // Votes have no sign: a blade turning by 180 - angle looks the same.
+    EXPECT_EQ(BODT::internal::tensor_vote(folded_star(180 - angle * 1.001), o).kind, BODT::internal::Voted_kind::feature) << angle;
+    EXPECT_NEAR(bodt_cli::angle_of_edge_ratio(o.edge_ratio), angle, 1e-9);
+
+    BODT::Tensor_voting_options c;
+    c.corner_ratio = bodt_cli::corner_ratio_of_angle(angle);
+    EXPECT_EQ(BODT::internal::tensor_vote(corner_star(angle * 1.001), c).kind, BODT::internal::Voted_kind::corner) << angle;
+    EXPECT_NE(BODT::internal::tensor_vote(corner_star(angle * 0.999), c).kind, BODT::internal::Voted_kind::corner) << angle;
+    EXPECT_NEAR(bodt_cli::angle_of_corner_ratio(c.corner_ratio), angle, 1e-9);
+  }
+  EXPECT_NEAR(bodt_cli::corner_ratio_of_angle(90), 1.0, 1e-15) << "a cube corner";
+  EXPECT_NEAR(bodt_cli::edge_ratio_of_angle(90), 1.0, 1e-15);
+  const BODT::Tensor_voting_options defaults;
+  EXPECT_NEAR(bodt_cli::angle_of_edge_ratio(defaults.edge_ratio), 25.21, 0.005);
+  EXPECT_NEAR(bodt_cli::angle_of_corner_ratio(defaults.corner_ratio), 30.27, 0.005);
+}
+
+namespace {
+
+// The box [0, 4]^3 with a roof: the top rises to a ridge along y at x = 2 whose two
+// sides turn by 30 degrees. No feature information: tensor voting classifies.
+BODT::Tet_mesh roofed_box()
+{
+  const int n = 4;
+  BODT::Tet_mesh m = cube_grid(n, [](int, int, int) { return 1; });
+  const double slope = std::tan(15 * CGAL_PI / 180);
+  for(Point& p : m.points)
+    p = Point(p.x(), p.y(), p.z() * (1 + slope * (2 - std::abs(p.x() - 2)) / n));
+  return m;
+}
+
+nlohmann::json vertices_with(const fs::path& dir, const fs::path& in, const std::string& options)
+{
+  std::string out;
+  EXPECT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --iterations 1 --quiet --report " +
+                         q(dir / "r.json") + " " + options,
+                     out, dir),
+            0)
+      << options << "\n" << out;
+  return nlohmann::json::parse(read_text(dir / "r.json"));
+}
+
+} // namespace
+
+// On the roofed box the three inner vertices of the ridge (sides turning by 30
+// degrees) are feature vertices below a feature angle of 30 and surface vertices
+// above; its two ends (a 150-degree wall between two roof sides) are corners below
+// a corner angle of 35.7 and feature vertices above. No option: the library's ratios.
+TEST(FeatureAngles, OptionsChangeTheClassification)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = dir / "roof.mesh";
+  BODT::IO::write_medit(in.string(), roofed_box());
+  auto count = [](const nlohmann::json& r, const char* kind) {
+    return r.at("result").at("vertices").at(kind).get<int>();
+  };
+  const nlohmann::json plain = vertices_with(dir, in, "");
+  EXPECT_TRUE(plain.at("result").at("vertices").at("tensor_voting").get<bool>());
+  EXPECT_EQ(plain.at("options").at("tensor_voting").at("edge_ratio"), BODT::Tensor_voting_options().edge_ratio);
+  EXPECT_EQ(plain.at("options").at("tensor_voting").at("corner_ratio"), BODT::Tensor_voting_options().corner_ratio);
+
+  const nlohmann::json sharp = vertices_with(dir, in, "--feature-angle 25");
+  const nlohmann::json blunt = vertices_with(dir, in, "--feature-angle 35");
+  EXPECT_NEAR(sharp.at("options").at("tensor_voting").at("edge_ratio").get<double>(),
+              std::pow(std::tan(12.5 * CGAL_PI / 180), 2), 1e-15);
+  EXPECT_NEAR(sharp.at("options").at("tensor_voting").at("feature_angle_deg").get<double>(), 25, 1e-12);
+  EXPECT_EQ(count(sharp, "feature") - count(blunt, "feature"), 3);
+  EXPECT_EQ(count(blunt, "surface") - count(sharp, "surface"), 3);
+  EXPECT_EQ(count(sharp, "fixed"), count(blunt, "fixed"));
+  EXPECT_EQ(count(plain, "feature"), count(sharp, "feature")) << "the default 25.21 degrees finds the ridge";
+
+  const nlohmann::json cornered = vertices_with(dir, in, "--corner-angle 30");
+  const nlohmann::json open = vertices_with(dir, in, "--corner-angle 40");
+  EXPECT_EQ(count(cornered, "fixed") - count(open, "fixed"), 2);
+  EXPECT_EQ(count(open, "feature") - count(cornered, "feature"), 2);
+  EXPECT_NEAR(open.at("options").at("tensor_voting").at("corner_ratio").get<double>(),
+              bodt_cli::corner_ratio_of_angle(40), 1e-15);
+}
+
+// Bad angles and planes are refused before any work with exit status 2 and a
+// message naming the option; options that cannot act are said to be unused.
+TEST(FeatureAngles, BadValuesAreRefusedAndUnusedOnesReported)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  struct Case
+  {
+    std::string args, message;
+  };
+  const std::vector<Case> cases = {
+      {"--feature-angle 0", "--feature-angle"},
+      {"--feature-angle 90.5", "--feature-angle"},
+      {"--feature-angle sharp", "--feature-angle"},
+      {"--corner-angle -10", "--corner-angle"},
+      {"--feature-angle 30 --no-features", "--no-features"},
+      {"--cut z=1", "--html"},
+      {"--html " + q(dir / "p.html") + " --cut 1,2", "not a plane"},
+      {"--html " + q(dir / "p.html") + " --cut 0,0,0,0,0,0", "must not be zero"},
+      {"--html " + q(dir / "p.html") + " --cut z=100", "misses the mesh"},
+  };
+  // What an earlier run of this test wrote.
+  fs::remove(dir / "out.mesh");
+  fs::remove(dir / "p.html");
+  for(const Case& c : cases)
+  {
+    std::string out;
+    EXPECT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " " + c.args, out, dir), 2) << c.args;
+    EXPECT_NE(out.find(c.message), std::string::npos) << c.args << "\n" << out;
+    EXPECT_FALSE(fs::exists(dir / "out.mesh")) << c.args;
+    EXPECT_FALSE(fs::exists(dir / "p.html")) << c.args;
+  }
+  // Boundary vertices that do not move are not classified: the angle is said to be unused.
+  std::string out;
+  ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --method odt --feature-angle 40", out, dir), 0);
+  EXPECT_NE(out.find("--feature-angle and --corner-angle were not used: boundary vertices do not move with --method odt"),
+            std::string::npos)
+      << out;
+  // A mesh with feature edges of its own still votes inside its patches (issue 30): the angle is used.
+  BODT::Tet_mesh edged = test_mesh();
+  edged.edges.push_back({0, 1});
+  edged.edge_labels.push_back(1);
+  const fs::path with_edges = dir / "edges.mesh";
+  BODT::IO::write_medit(with_edges.string(), edged);
+  ASSERT_EQ(run_bodt("smooth " + q(with_edges) + " -o " + q(dir / "out.mesh") + " --feature-angle 40", out, dir), 0);
+  EXPECT_EQ(out.find("not used"), std::string::npos) << out;
 }

@@ -19,25 +19,25 @@
 #include <vector>
 
 namespace BODT = CGAL::BODT_3;
-using BODT::Bad_tet_shape;
+using BODT::internal::Bad_tet_shape;
 using BODT::Tet_mesh;
 using Point = Tet_mesh::Point;
 using File_c3t3 = BODT::Tet_mesh_c3t3;
 using Vertex_handle = File_c3t3::Vertex_handle;
-using Labels = BODT::C3t3_adapter<File_c3t3>;
+using Adapter = BODT::internal::C3t3_adapter<File_c3t3>;
 
 using bodt_test::bare;
 using bodt_test::expect_valid;
 
 namespace {
 
-Bad_tet_shape shape_of(Point a, Point b, Point c, Point d)
+CGAL::BODT_3::internal::Bad_tet_shape shape_of(Point a, Point b, Point c, Point d)
 {
   if(CGAL::orientation(a, b, c, d) != CGAL::POSITIVE) std::swap(c, d);
   BODT::Bad_tet_options opt;
   opt.small_angle = 45;   // loose bounds: the shapes, not their badness, are under test
   opt.large_angle = 135;
-  return BODT::classify_bad_tet(a, b, c, d, opt).shape;
+  return BODT::internal::classify_bad_tet(a, b, c, d, opt).shape;
 }
 
 Tet_mesh make_mesh(const std::vector<Point>& points, std::vector<std::array<int, 4>> tets, std::vector<int> labels = {})
@@ -110,28 +110,28 @@ Tet_mesh bipyramid()
 TEST(Bad_tet_shapes, EachShapeOnAConstructedTetrahedron)
 {
   // Good: the regular tetrahedron.
-  EXPECT_EQ(shape_of(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)), Bad_tet_shape::good);
+  EXPECT_EQ(shape_of(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)), CGAL::BODT_3::internal::Bad_tet_shape::good);
   // One short edge a b over the middle of c d: a wedge; beyond its end: a spike.
-  EXPECT_EQ(shape_of(Point(-0.05, 0, 0.5), Point(0.05, 0, 0.5), Point(0, -1, 0), Point(0, 1, 0)), Bad_tet_shape::wedge);
-  EXPECT_EQ(shape_of(Point(-0.05, 2, 0.5), Point(0.05, 2, 0.5), Point(0, -1, 0), Point(0, 1, 0)), Bad_tet_shape::spike);
+  EXPECT_EQ(shape_of(Point(-0.05, 0, 0.5), Point(0.05, 0, 0.5), Point(0, -1, 0), Point(0, 1, 0)), CGAL::BODT_3::internal::Bad_tet_shape::wedge);
+  EXPECT_EQ(shape_of(Point(-0.05, 2, 0.5), Point(0.05, 2, 0.5), Point(0, -1, 0), Point(0, 1, 0)), CGAL::BODT_3::internal::Bad_tet_shape::spike);
   // Two short edges sharing b: bent at b, a spear; nearly straight, a splinter.
   EXPECT_EQ(shape_of(Point(0, 0, 0), Point(0.22, 0.14, 0), Point(0.44, 0, 0), Point(0.22, 0.05, 1.1)),
-            Bad_tet_shape::spear);
+            CGAL::BODT_3::internal::Bad_tet_shape::spear);
   EXPECT_EQ(shape_of(Point(0, 0, 0), Point(0.25, 0.02, 0), Point(0.5, 0, 0.03), Point(0.25, 0.3, 1.5)),
-            Bad_tet_shape::splinter);
+            CGAL::BODT_3::internal::Bad_tet_shape::splinter);
   // Two opposite short edges: a spindle.
   EXPECT_EQ(shape_of(Point(0, 0, 0), Point(0.1, 0.05, 0), Point(0, 0.1, 1.5), Point(0.08, 0, 1.5)),
-            Bad_tet_shape::spindle);
+            CGAL::BODT_3::internal::Bad_tet_shape::spindle);
   // Three short edges around a face (a thin base, far apex): a spire.
   EXPECT_EQ(shape_of(Point(0, 0, 0), Point(0.2, 0, 0), Point(0.1, 0.01, 0), Point(0.05, 0.05, 1.5)),
-            Bad_tet_shape::spire);
+            CGAL::BODT_3::internal::Bad_tet_shape::spire);
   // Flat, no short edge: a vertex over the inside of its face, a cap; over an edge of
   // it, a spade; two crossing edges, a sliver.
-  EXPECT_EQ(shape_of(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0.3, 0.3, 0.05)), Bad_tet_shape::cap);
+  EXPECT_EQ(shape_of(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0.3, 0.3, 0.05)), CGAL::BODT_3::internal::Bad_tet_shape::cap);
   EXPECT_EQ(shape_of(Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 0.9, 0), Point(0.5, -0.02, 0.03)),
-            Bad_tet_shape::spade);
+            CGAL::BODT_3::internal::Bad_tet_shape::spade);
   EXPECT_EQ(shape_of(Point(1, 0, 0.05), Point(0, 1, -0.05), Point(-1, 0, 0.05), Point(0, -1, -0.05)),
-            Bad_tet_shape::sliver);
+            CGAL::BODT_3::internal::Bad_tet_shape::sliver);
 }
 
 TEST(Bad_tet_shapes, WhereToSplit)
@@ -142,8 +142,8 @@ TEST(Bad_tet_shapes, WhereToSplit)
   // A cap over (0.3, 0.3) of its face: the barycentric coordinates of that point.
   Point a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), d(0.3, 0.3, 0.05);
   if(CGAL::orientation(a, b, c, d) != CGAL::POSITIVE) std::swap(a, b);
-  const auto cap = BODT::classify_bad_tet(a, b, c, d, opt);
-  ASSERT_EQ(cap.shape, Bad_tet_shape::cap);
+  const auto cap = BODT::internal::classify_bad_tet(a, b, c, d, opt);
+  ASSERT_EQ(cap.shape, CGAL::BODT_3::internal::Bad_tet_shape::cap);
   EXPECT_EQ(cap.vertex, 3);
   const Point p[3] = {a, b, c};
   double x = 0, y = 0, s = 0;
@@ -156,9 +156,9 @@ TEST(Bad_tet_shapes, WhereToSplit)
   EXPECT_NEAR(x / s, 0.3, 1e-12);
   EXPECT_NEAR(y / s, 0.3, 1e-12);
   // A sliver: its crossing edges meet halfway along both.
-  const auto sliver = BODT::classify_bad_tet(Point(1, 0, 0.05), Point(-1, 0, 0.05), Point(0, 1, -0.05),
+  const auto sliver = BODT::internal::classify_bad_tet(Point(1, 0, 0.05), Point(-1, 0, 0.05), Point(0, 1, -0.05),
                                              Point(0, -1, -0.05), opt);
-  ASSERT_EQ(sliver.shape, Bad_tet_shape::sliver);
+  ASSERT_EQ(sliver.shape, CGAL::BODT_3::internal::Bad_tet_shape::sliver);
   EXPECT_NEAR(sliver.t[0], 0.5, 1e-12);
   EXPECT_NEAR(sliver.t[1], 0.5, 1e-12);
 }
@@ -175,12 +175,12 @@ TEST(Splits, InteriorEdgeAndItsUndo)
   std::vector<Vertex_handle> h;
   BODT::tet_mesh_to_c3t3(make_mesh(p, t), c3t3, "test", &h);
   const State before = state(c3t3);
-  Labels labels(c3t3, false);
+  Adapter adapter(c3t3, false);
   File_c3t3::Cell_handle c;
   int i, j;
   ASSERT_TRUE(c3t3.triangulation().tds().is_edge(h[0], h[1], c, i, j));
-  BODT::Split_record<Labels> r;
-  ASSERT_TRUE(BODT::split_edge(labels, c, i, j, Point(0, 0, 0.2), r));
+  BODT::internal::Split_record<Adapter> r;
+  ASSERT_TRUE(BODT::internal::split_edge(adapter, c, i, j, Point(0, 0, 0.2), r));
   expect_valid(c3t3);
   const State after = state(c3t3);
   expect_same_volumes(before, after);
@@ -188,7 +188,7 @@ TEST(Splits, InteriorEdgeAndItsUndo)
   EXPECT_EQ(after.vertices, before.vertices + 1);
   EXPECT_EQ(c3t3.in_dimension(r.vertex), 3);
   EXPECT_TRUE(r.boundary.empty());
-  BODT::undo_split(labels, r);
+  BODT::internal::undo_split(adapter, r);
   expect_valid(c3t3);
   const State undone = state(c3t3);
   EXPECT_EQ(undone.cells, before.cells);
@@ -204,21 +204,21 @@ TEST(Splits, BoundaryEdgeKeepsPatchesAndVolumes)
   std::vector<Vertex_handle> h;
   BODT::tet_mesh_to_c3t3(bipyramid(), c3t3, "test", &h);
   const State before = state(c3t3);
-  Labels labels(c3t3, false);
+  Adapter adapter(c3t3, false);
   File_c3t3::Cell_handle c;
   int i, j;
   // An edge on the outer boundary, within subdomain 1 (edge (0, 2) would be on the interface too).
   ASSERT_TRUE(c3t3.triangulation().tds().is_edge(h[0], h[3], c, i, j));
   const Point mid = CGAL::midpoint(bare(c3t3, h[0]), bare(c3t3, h[3]));
-  BODT::Split_record<Labels> r;
-  ASSERT_TRUE(BODT::split_edge(labels, c, i, j, mid, r));
+  BODT::internal::Split_record<Adapter> r;
+  ASSERT_TRUE(BODT::internal::split_edge(adapter, c, i, j, mid, r));
   expect_valid(c3t3);
   const State after = state(c3t3);
   expect_same_volumes(before, after);
   EXPECT_EQ(after.facets, before.facets + 2);   // its two boundary facets became four
   EXPECT_EQ(c3t3.in_dimension(r.vertex), 2);
   EXPECT_EQ(r.boundary.size(), 2u);
-  BODT::undo_split(labels, r);
+  BODT::internal::undo_split(adapter, r);
   expect_valid(c3t3);
   EXPECT_EQ(state(c3t3).cells, before.cells);
   EXPECT_EQ(state(c3t3).facets, before.facets);
@@ -235,13 +235,13 @@ TEST(Splits, CurveEdgeBecomesTwoAndTheFileFollows)
   File_c3t3 c3t3;
   std::vector<Vertex_handle> h;
   BODT::tet_mesh_to_c3t3(mesh, c3t3, "test", &h);
-  Labels labels(c3t3, false);
+  Adapter adapter(c3t3, false);
   File_c3t3::Cell_handle c;
   int i, j;
   ASSERT_TRUE(c3t3.triangulation().tds().is_edge(h[0], h[2], c, i, j));
   const int curve = c3t3.curve_index(h[0], h[2]);
-  BODT::Split_record<Labels> r;
-  ASSERT_TRUE(BODT::split_edge(labels, c, i, j, CGAL::midpoint(bare(c3t3, h[0]), bare(c3t3, h[2])), r));
+  BODT::internal::Split_record<Adapter> r;
+  ASSERT_TRUE(BODT::internal::split_edge(adapter, c, i, j, CGAL::midpoint(bare(c3t3, h[0]), bare(c3t3, h[2])), r));
   expect_valid(c3t3);
   EXPECT_EQ(c3t3.in_dimension(r.vertex), 1);
   EXPECT_FALSE(c3t3.is_in_complex(h[0], h[2]));
@@ -261,7 +261,7 @@ TEST(Splits, CurveEdgeBecomesTwoAndTheFileFollows)
   EXPECT_EQ(out.ridges, (std::vector<int>{0, 1}));
   EXPECT_EQ(out.tets.size(), mesh.tets.size() + 2);   // the two cells around (0, 2) became four
 
-  BODT::undo_split(labels, r);
+  BODT::internal::undo_split(adapter, r);
   expect_valid(c3t3);
   EXPECT_TRUE(c3t3.is_in_complex(h[0], h[2]));
   EXPECT_EQ(c3t3.curve_index(h[0], h[2]), curve);
@@ -277,7 +277,7 @@ TEST(Splits, InteriorAndBoundaryFacets)
     std::vector<Vertex_handle> h;
     BODT::tet_mesh_to_c3t3(bipyramid(), c3t3, "test", &h);
     const State before = state(c3t3);
-    Labels labels(c3t3, false);
+    Adapter adapter(c3t3, false);
     // The interface facet (0, 1, 5) between subdomains 1 and 2; the boundary facet (0, 2, 3).
     File_c3t3::Cell_handle c;
     int i, j, k;
@@ -287,15 +287,15 @@ TEST(Splits, InteriorAndBoundaryFacets)
     const Point p((bare(c3t3, a).x() + bare(c3t3, b).x() + bare(c3t3, d).x()) / 3,
                   (bare(c3t3, a).y() + bare(c3t3, b).y() + bare(c3t3, d).y()) / 3,
                   (bare(c3t3, a).z() + bare(c3t3, b).z() + bare(c3t3, d).z()) / 3);
-    BODT::Split_record<Labels> r;
-    ASSERT_TRUE(BODT::split_facet(labels, c, f, p, r));
+    BODT::internal::Split_record<Adapter> r;
+    ASSERT_TRUE(BODT::internal::split_facet(adapter, c, f, p, r));
     expect_valid(c3t3);
     const State after = state(c3t3);
     expect_same_volumes(before, after);
     EXPECT_EQ(after.facets, before.facets + 2);
     EXPECT_EQ(c3t3.in_dimension(r.vertex), 2);
     EXPECT_EQ(after.cells.size(), before.cells.size() + (interface ? 4u : 2u));
-    BODT::undo_split(labels, r);
+    BODT::internal::undo_split(adapter, r);
     expect_valid(c3t3);
     EXPECT_EQ(state(c3t3).cells, before.cells);
     EXPECT_EQ(state(c3t3).facets, before.facets);
@@ -309,12 +309,12 @@ TEST(Splits, AnInvertingPointIsRefused)
   std::vector<Vertex_handle> h;
   BODT::tet_mesh_to_c3t3(bipyramid(), c3t3, "test", &h);
   const State before = state(c3t3);
-  Labels labels(c3t3, false);
+  Adapter adapter(c3t3, false);
   File_c3t3::Cell_handle c;
   int i, j;
   ASSERT_TRUE(c3t3.triangulation().tds().is_edge(h[0], h[1], c, i, j));
-  BODT::Split_record<Labels> r;
-  EXPECT_FALSE(BODT::split_edge(labels, c, i, j, Point(3, 0, 0), r));   // far off the edge
+  BODT::internal::Split_record<Adapter> r;
+  EXPECT_FALSE(BODT::internal::split_edge(adapter, c, i, j, Point(3, 0, 0), r));   // far off the edge
   expect_valid(c3t3);
   EXPECT_EQ(state(c3t3).cells, before.cells);
   EXPECT_EQ(state(c3t3).vertices, before.vertices);

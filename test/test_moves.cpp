@@ -20,7 +20,7 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Vector = K::Vector_3;
-using Star = CGAL::BODT_3::Vertex_star<K>;
+using Star = CGAL::BODT_3::internal::Vertex_star<K>;
 
 namespace {
 
@@ -283,7 +283,7 @@ TEST(OdtMove, RegularStarMovesBackToTheCentre)
   for(int a : {0, 1})
     for(int b : {2, 3})
       for(int c : {4, 5}) add_cell(star, v[a], v[b], v[c]);
-  const Vector X = CGAL::BODT_3::Odt_interior_move()(star);
+  const Vector X = CGAL::BODT_3::internal::Odt_interior_move()(star);
   EXPECT_NEAR(X.x(), -0.1, 1e-14);
   EXPECT_NEAR(X.y(), 0.05, 1e-14);
   EXPECT_NEAR(X.z(), -0.03, 1e-14);
@@ -296,7 +296,7 @@ TEST(OdtMove, EqualsNumericalMinimizerOnRandomInnerStars)
   {
     const Star star = random_inner_star(rng);
     ASSERT_TRUE(star_is_valid(star));
-    const Vector X = CGAL::BODT_3::Odt_interior_move()(star);
+    const Vector X = CGAL::BODT_3::internal::Odt_interior_move()(star);
     const auto num = newton_minimize(
         [&](const std::vector<LD>& x) { return exact_error(star, {x[0], x[1], x[2]}); }, 3, 1e-3L);
     const P3 d{num[0] - X.x(), num[1] - X.y(), num[2] - X.z()};
@@ -318,7 +318,7 @@ TEST(BodtSurfaceMove, EqualsNumericalMinimizerOnRandomBoundaryStars)
     const Vector from_cells = star.subdomain_normal(1);
     EXPECT_LE(std::sqrt((normal - from_cells).squared_length()), 1e-14 * std::sqrt(normal.squared_length()));
 
-    const Vector X = CGAL::BODT_3::Bodt_surface_move()(star, normal);
+    const Vector X = CGAL::BODT_3::internal::Bodt_surface_move()(star, normal);
     const auto st = plane_basis(normal);
     auto on_plane = [&](const std::vector<LD>& x) {
       return P3{x[0] * st.first.x() + x[1] * st.second.x(), x[0] * st.first.y() + x[1] * st.second.y(),
@@ -347,7 +347,7 @@ TEST(NodtMove, IsTheNewtonStepOfTheExactError)
   for(int n = 0; n < 200; ++n)
   {
     const Star star = random_boundary_star(rng);
-    const Vector X = CGAL::BODT_3::Nodt_move()(star);
+    const Vector X = CGAL::BODT_3::internal::Nodt_move()(star);
     const LD h = 1e-4L;
     auto f = [&](LD a, LD b, LD c) { return exact_error(star, {a, b, c}); };
     LD g[3], H[3][3];
@@ -389,7 +389,7 @@ TEST(NodtMove, IsTheNewtonStepOfTheExactError)
   for(int n = 0; n < 50; ++n)
   {
     const Star star = random_inner_star(rng);
-    const Vector a = CGAL::BODT_3::Nodt_move()(star), b = CGAL::BODT_3::Odt_interior_move()(star);
+    const Vector a = CGAL::BODT_3::internal::Nodt_move()(star), b = CGAL::BODT_3::internal::Odt_interior_move()(star);
     EXPECT_LE(std::sqrt((a - b).squared_length()), 1e-12 * std::sqrt(b.squared_length())) << "star " << n;
   }
 }
@@ -424,7 +424,7 @@ TEST(BodtSurfaceMove, CoefficientsAreThePrintedOnes)
       H -= r * (s * w) / 60;
       I -= r * (t * w) / 60;
     }
-    const CGAL::BODT_3::Interpolation_error<K> model(star);
+    const CGAL::BODT_3::internal::Interpolation_error<K> model(star);
     EXPECT_NEAR(model.quadratic(s, s), E, 1e-13);
     EXPECT_NEAR(model.quadratic(t, t), F, 1e-13);
     EXPECT_NEAR(2 * model.quadratic(s, t), G, 1e-13);
@@ -444,7 +444,7 @@ TEST(BodtFeatureMove, EqualsNumericalMinimizerAlongTheFeature)
     const Vector normal = unit(star.boundary_normal());
     Vector d(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
     d = unit(d - (d * normal) * normal);
-    const Vector X = CGAL::BODT_3::Bodt_feature_move()(star, d);
+    const Vector X = CGAL::BODT_3::internal::Bodt_feature_move()(star, d);
     const auto num = newton_minimize(
         [&](const std::vector<LD>& x) { return exact_error(star, {x[0] * d.x(), x[0] * d.y(), x[0] * d.z()}); }, 1,
         1e-3L);
@@ -467,7 +467,7 @@ TEST(BodtSurfaceMove, InterfaceVertexKeepsEverySubdomainVolume)
       c.subdomain = (c.a.z() + c.b.z() + c.c.z() > 0) ? 2 : 1;
     const Vector n1 = star.subdomain_normal(1), n2 = star.subdomain_normal(2);
     ASSERT_LE(std::sqrt((n1 + n2).squared_length()), 1e-14 * std::sqrt(n1.squared_length()));
-    const Vector X = CGAL::BODT_3::Bodt_surface_move()(star, n1);
+    const Vector X = CGAL::BODT_3::internal::Bodt_surface_move()(star, n1);
     const auto st = plane_basis(n1);
     auto on_plane = [&](const std::vector<LD>& x) {
       return P3{x[0] * st.first.x() + x[1] * st.second.x(), x[0] * st.first.y() + x[1] * st.second.y(),
@@ -490,8 +490,8 @@ TEST(BodtSurfaceMove, NoMoveWithoutAUniqueMinimum)
   Star star;
   star.x0 = Point(0, 0, 0);
   star.boundary.push_back({Point(1, 0, 0), Point(0, 1, 0)});
-  const Vector X = CGAL::BODT_3::Bodt_surface_move()(star, Vector(0, 0, 1));
+  const Vector X = CGAL::BODT_3::internal::Bodt_surface_move()(star, Vector(0, 0, 1));
   EXPECT_EQ(X, Vector(0, 0, 0));
-  EXPECT_EQ(CGAL::BODT_3::Bodt_feature_move()(star, Vector(1, 0, 0)), Vector(0, 0, 0));
-  EXPECT_EQ(CGAL::BODT_3::Odt_interior_move()(star), Vector(0, 0, 0));
+  EXPECT_EQ(CGAL::BODT_3::internal::Bodt_feature_move()(star, Vector(1, 0, 0)), Vector(0, 0, 0));
+  EXPECT_EQ(CGAL::BODT_3::internal::Odt_interior_move()(star), Vector(0, 0, 0));
 }

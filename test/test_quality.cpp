@@ -1,12 +1,13 @@
 // Quality measures: dihedral angles against CGAL's independent
 // approximate_dihedral_angle, counts, volumes, exact inversion test, and the
 // real meshes of ../shared/data when present.
+#include "report/json_report.h"
+
 #include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
 #include <CGAL/BODT_3/IO/medit.h>
-#include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
@@ -69,10 +70,10 @@ Tet_mesh one_tet(const Point& a, const Point& b, const Point& c, const Point& d,
 
 TEST(DihedralAngles, RegularTetrahedron)
 {
-  const auto a = CGAL::BODT_3::dihedral_angles(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1));
+  const auto a = CGAL::BODT_3::internal::dihedral_angles(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1));
   const double expected = std::acos(1.0 / 3.0) * 180.0 / CGAL_PI;   // 70.5288 degrees
   for(double x : a) EXPECT_NEAR(x, expected, 1e-12);
-  EXPECT_NEAR(CGAL::BODT_3::radius_ratio(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)), 1.0,
+  EXPECT_NEAR(CGAL::BODT_3::internal::radius_ratio(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)), 1.0,
               1e-12);
 }
 
@@ -84,7 +85,7 @@ TEST(DihedralAngles, AgreeWithCGALOnRandomTetrahedra)
     Point p[4];
     for(auto& q : p) q = Point(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
     if(CGAL::orientation(p[0], p[1], p[2], p[3]) == CGAL::COPLANAR) continue;
-    const auto mine = CGAL::BODT_3::min_max_dihedral_angle(p[0], p[1], p[2], p[3]);
+    const auto mine = CGAL::BODT_3::internal::min_max_dihedral_angle(p[0], p[1], p[2], p[3]);
     const auto ref = independent_min_max(p[0], p[1], p[2], p[3]);
     EXPECT_NEAR(mine.first, ref.first, 1e-7);
     EXPECT_NEAR(mine.second, ref.second, 1e-7);
@@ -94,7 +95,7 @@ TEST(DihedralAngles, AgreeWithCGALOnRandomTetrahedra)
 TEST(DihedralAngles, RightCornerTetrahedron)
 {
   // Three right angles at the edges through the origin, and arccos(1/sqrt(3)) on the others.
-  const auto a = CGAL::BODT_3::dihedral_angles(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1));
+  const auto a = CGAL::BODT_3::internal::dihedral_angles(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1));
   EXPECT_NEAR(a[0], 90, 1e-12);
   EXPECT_NEAR(a[1], 90, 1e-12);
   EXPECT_NEAR(a[2], 90, 1e-12);
@@ -148,15 +149,15 @@ TEST(MeshQuality, VolumeOfATetrahedronWithAFarVertexIsAccurate)
   do
   {
     const double want = exact(order[0], order[1], order[2], order[3]);
-    const double got = CGAL::BODT_3::tet_volume(p[order[0]], p[order[1]], p[order[2]], p[order[3]]);
+    const double got = CGAL::BODT_3::internal::tet_volume(p[order[0]], p[order[1]], p[order[2]], p[order[3]]);
     EXPECT_NEAR(got, want, 1e-12 * std::abs(want)) << order[0] << order[1] << order[2] << order[3];
   } while(std::next_permutation(order, order + 4));
 
   // The quality measure of every decision uses that volume: it must not depend on
   // which vertex comes first (it did, and flips then chose by a wrong measure).
-  const double sine = CGAL::BODT_3::min_dihedral_sine(p[0], p[1], p[2], p[3]);
+  const double sine = CGAL::BODT_3::internal::min_dihedral_sine(p[0], p[1], p[2], p[3]);
   for(const auto& o : {std::array<int, 4>{1, 0, 3, 2}, std::array<int, 4>{2, 3, 0, 1}, std::array<int, 4>{3, 2, 1, 0}})
-    EXPECT_NEAR(CGAL::BODT_3::min_dihedral_sine(p[o[0]], p[o[1]], p[o[2]], p[o[3]]), sine, 1e-9 * sine);
+    EXPECT_NEAR(CGAL::BODT_3::internal::min_dihedral_sine(p[o[0]], p[o[1]], p[o[2]], p[o[3]]), sine, 1e-9 * sine);
 }
 
 TEST(MeshQuality, FlatTetrahedronIsCountedAsInverted)
@@ -248,7 +249,7 @@ TEST(MeshQuality, RealMeshesAgreeWithIndependentComputation)
 TEST(Handle_index_map, FindsWhatWasInsertedThroughGrowth)
 {
   std::vector<int> storage(5000), others(100);
-  CGAL::BODT_3::Handle_index_map<int*> map;
+  CGAL::BODT_3::internal::Handle_index_map<int*> map;
   map.reset(0);
   for(std::size_t i = 0; i < storage.size(); ++i) EXPECT_TRUE(map.insert(&storage[i], static_cast<int>(i)));
   EXPECT_FALSE(map.insert(&storage[7], 99));
@@ -268,9 +269,9 @@ TEST(Handle_index_map, InsertAllFromThreadsFindsEveryHandle)
   for(int& x : storage) handles.push_back(&x);
   for(int threads : {1, 2, 4})
   {
-    CGAL::BODT_3::Handle_index_map<int*> map;
+    CGAL::BODT_3::internal::Handle_index_map<int*> map;
     map.reset(handles.size() / 4);   // grows before the threads insert
-    CGAL::BODT_3::Thread_workers<char> workers(threads);
+    CGAL::BODT_3::internal::Thread_workers<char> workers(threads);
     map.insert_all(handles, workers);
     EXPECT_EQ(map.size(), handles.size());
     for(std::size_t i = 0; i < handles.size(); ++i) ASSERT_EQ(map.find(handles[i]), static_cast<int>(i));
@@ -285,7 +286,7 @@ TEST(Handle_index_map, InsertAllFromThreadsFindsEveryHandle)
 TEST(Id_tuple_map, AgreesWithStdMapThroughGrowth)
 {
   CGAL::Random random(11);
-  CGAL::BODT_3::Id_tuple_map<4, int> map;
+  CGAL::BODT_3::internal::Id_tuple_map<4, int> map;
   std::map<std::array<int, 4>, int> reference;
   auto key = [&] {
     return std::array<int, 4>{random.get_int(0, 40), random.get_int(0, 40), random.get_int(0, 40), random.get_int(0, 40)};
@@ -346,7 +347,7 @@ TEST(GroupByKey, StableGroupsOnAnyNumberOfThreads)
   {
     std::vector<int> begin;
     std::vector<long> values;
-    CGAL::BODT_3::group_by_key<long>(items, keys, threads, each, begin, values);
+    CGAL::BODT_3::internal::group_by_key<long>(items, keys, threads, each, begin, values);
     ASSERT_EQ(begin.size(), keys + 1);
     ASSERT_EQ(values.size(), 3 * items);
     for(std::size_t k = 0; k < keys; ++k)
@@ -398,7 +399,7 @@ struct Delaunay_cells
 TEST(Tet_face_matching, FindsTheTriangulationsAdjacencyOnAnyNumberOfThreads)
 {
   const Delaunay_cells d(3000);
-  const CGAL::BODT_3::Tet_face_matching one(d.cells, d.points.size(), 1);
+  const CGAL::BODT_3::internal::Tet_face_matching one(d.cells, d.points.size(), 1);
   EXPECT_EQ(one.crowded_face, -1);
   ASSERT_EQ(one.match.size(), 4 * d.cells.size());
   for(std::size_t f = 0; f < one.match.size(); ++f)
@@ -414,7 +415,7 @@ TEST(Tet_face_matching, FindsTheTriangulationsAdjacencyOnAnyNumberOfThreads)
     for(int k = 1; k < 4; ++k) EXPECT_EQ(std::count(b.begin(), b.end(), a[(f % 4 + k) % 4]), 1);
   }
   for(int threads : {2, 4})
-    EXPECT_EQ(CGAL::BODT_3::Tet_face_matching(d.cells, d.points.size(), threads).match, one.match);
+    EXPECT_EQ(CGAL::BODT_3::internal::Tet_face_matching(d.cells, d.points.size(), threads).match, one.match);
 }
 
 // Three tetrahedra on one face: none of the three is matched, and the first face
@@ -422,7 +423,7 @@ TEST(Tet_face_matching, FindsTheTriangulationsAdjacencyOnAnyNumberOfThreads)
 TEST(Tet_face_matching, ReportsACrowdedFaceAndSurvivesABrokenCell)
 {
   const std::vector<std::array<int, 4>> cells = {{0, 1, 2, 3}, {5, 6, 7, 8}, {1, 0, 2, 4}, {0, 1, 2, 5}, {6, 6, 7, 8}};
-  const CGAL::BODT_3::Tet_face_matching faces(cells, 9);
+  const CGAL::BODT_3::internal::Tet_face_matching faces(cells, 9);
   EXPECT_EQ(faces.crowded_face, 3);   // cell 0, face opposite vertex 3: (0 1 2)
   EXPECT_EQ(faces.match[3], -1);
   EXPECT_EQ(faces.match[4 * 2 + 3], -1);

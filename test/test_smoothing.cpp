@@ -250,9 +250,9 @@ TEST_P(Smoothing, SameOutputOnAnyNumberOfThreads)
 // The sweep's colouring: every movable vertex once, and no two vertices of a
 // colour in one cell or in one hull check (what lets them move concurrently).
 template <class K>
-void expect_valid_colouring(const BODT::Flat_mesh<K>& mesh, const std::vector<char>& movable)
+void expect_valid_colouring(const BODT::internal::Flat_mesh<K>& mesh, const std::vector<char>& movable)
 {
-  const BODT::Sweep_order order = BODT::sweep_order(mesh, movable);
+  const BODT::internal::Sweep_order order = BODT::internal::sweep_order(mesh, movable);
   std::vector<int> colour(mesh.number_of_vertices(), -1);
   for(std::size_t k = 0; k + 1 < order.colour_begin.size(); ++k)
     for(int i = order.colour_begin[k]; i < order.colour_begin[k + 1]; ++i)
@@ -277,8 +277,8 @@ void expect_valid_colouring(const BODT::Flat_mesh<K>& mesh, const std::vector<ch
 TEST_P(Smoothing, ColouringSeparatesEveryCellAndHullCheck)
 {
   Generated_mesh input = make_input(GetParam(), Size::small);
-  BODT::C3t3_adapter<C3t3> labels(input.c3t3);
-  BODT::Flat_view<BODT::C3t3_adapter<C3t3>> view(labels);
+  BODT::internal::C3t3_adapter<C3t3> adapter(input.c3t3);
+  BODT::internal::Flat_view<BODT::internal::C3t3_adapter<C3t3>> view(adapter);
   const auto& mesh = view.mesh();
   // Every vertex movable, and a random half: the colouring holds for any choice.
   CGAL::Random random(static_cast<unsigned>(GetParam()) + 7);
@@ -317,8 +317,8 @@ TEST(RandomSphere, SameOutputOnAnyNumberOfThreadsAndAValidColouring)
   const Delaunay input = make_random_sphere();
   {
     Delaunay tr = input;
-    BODT::Triangulation_3_adapter<Delaunay> labels(tr);
-    BODT::Flat_view<BODT::Triangulation_3_adapter<Delaunay>> view(labels);
+    BODT::internal::Triangulation_3_adapter<Delaunay> adapter(tr);
+    BODT::internal::Flat_view<BODT::internal::Triangulation_3_adapter<Delaunay>> view(adapter);
     ASSERT_FALSE(view.mesh().hull_checks.empty());
     expect_valid_colouring(view.mesh(), std::vector<char>(view.mesh().number_of_vertices(), 1));
   }

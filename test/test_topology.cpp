@@ -39,7 +39,7 @@ constexpr double kPi = 3.14159265358979323846;
 double brute_min_sine(const Point& a, const Point& b, const Point& c, const Point& d)
 {
   double q = 2;
-  for(double deg : BODT::dihedral_angles(a, b, c, d)) q = std::min(q, std::sin(deg * kPi / 180));
+  for(double deg : BODT::internal::dihedral_angles(a, b, c, d)) q = std::min(q, std::sin(deg * kPi / 180));
   return q;
 }
 
@@ -77,14 +77,14 @@ void build(const Tet_mesh& m, Built& b) { BODT::tet_mesh_to_c3t3(m, b.c3t3, "tes
 // One flip pass over every cell of the mesh (quality threshold 1).
 BODT::Topology_stats flip_all(File_c3t3& c3t3)
 {
-  BODT::C3t3_adapter<File_c3t3> labels(c3t3);
+  BODT::internal::C3t3_adapter<File_c3t3> adapter(c3t3);
   std::map<Vertex_handle, int> ids;
   for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
     ids.emplace(v, static_cast<int>(ids.size()));
   BODT::Flip_options opt;
   opt.quality_threshold = 1.0;
   std::vector<Vertex_handle> touched;
-  return BODT::flip_pass(labels, opt, BODT::Dihedral_bounds(), [&](Vertex_handle v) { return ids.at(v); },
+  return BODT::internal::flip_pass(adapter, opt, BODT::internal::Dihedral_bounds(), [&](Vertex_handle v) { return ids.at(v); },
                          touched);
 }
 
@@ -180,24 +180,24 @@ TEST(Quality_measure, MatchesTheSinesOfTheDihedralAngles)
     for(auto& x : p) x = Point(u(rng), u(rng), u(rng));
     if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) std::swap(p[2], p[3]);
     if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) continue;
-    EXPECT_NEAR(BODT::min_dihedral_sine(p[0], p[1], p[2], p[3]), brute_min_sine(p[0], p[1], p[2], p[3]), 1e-9);
+    EXPECT_NEAR(BODT::internal::min_dihedral_sine(p[0], p[1], p[2], p[3]), brute_min_sine(p[0], p[1], p[2], p[3]), 1e-9);
     // Negatively oriented: -1, whatever the shape.
-    EXPECT_EQ(BODT::min_dihedral_sine(p[0], p[1], p[3], p[2]), -1);
+    EXPECT_EQ(BODT::internal::min_dihedral_sine(p[0], p[1], p[3], p[2]), -1);
     ++checked;
   }
   EXPECT_GT(checked, 1900);
   Point r[4] = {Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)};
   if(CGAL::orientation(r[0], r[1], r[2], r[3]) != CGAL::POSITIVE) std::swap(r[2], r[3]);
-  EXPECT_NEAR(BODT::min_dihedral_sine(r[0], r[1], r[2], r[3]), std::sqrt(8.0) / 3, 1e-15);
+  EXPECT_NEAR(BODT::internal::min_dihedral_sine(r[0], r[1], r[2], r[3]), std::sqrt(8.0) / 3, 1e-15);
   // A flat tetrahedron has quality 0 or is refused.
-  EXPECT_LE(BODT::min_dihedral_sine(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0)), 0);
+  EXPECT_LE(BODT::internal::min_dihedral_sine(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0)), 0);
 }
 
 TEST(Quality_measure, BoundsAgreeWithTheAngles)
 {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
-  BODT::Dihedral_bounds bounds = BODT::Dihedral_bounds::empty();
+  BODT::internal::Dihedral_bounds bounds = BODT::internal::Dihedral_bounds::empty();
   // Bounds from a few tets, then every tet is inside iff its angles are.
   std::vector<std::array<Point, 4>> tets;
   while(tets.size() < 300)
@@ -211,17 +211,17 @@ TEST(Quality_measure, BoundsAgreeWithTheAngles)
   for(std::size_t i = 0; i < 20; ++i)
   {
     bounds.include(tets[i][0], tets[i][1], tets[i][2], tets[i][3]);
-    const auto mm = BODT::min_max_dihedral_angle(tets[i][0], tets[i][1], tets[i][2], tets[i][3]);
+    const auto mm = BODT::internal::min_max_dihedral_angle(tets[i][0], tets[i][1], tets[i][2], tets[i][3]);
     lo = std::min(lo, mm.first);
     hi = std::max(hi, mm.second);
   }
   int inside = 0;
   for(const auto& t : tets)
   {
-    const auto mm = BODT::min_max_dihedral_angle(t[0], t[1], t[2], t[3]);
+    const auto mm = BODT::internal::min_max_dihedral_angle(t[0], t[1], t[2], t[3]);
     const bool expected = mm.first >= lo - 1e-9 && mm.second <= hi + 1e-9;
     const bool clearly = mm.first >= lo + 1e-9 && mm.second <= hi - 1e-9;
-    const bool got = bounds.contains(t[0], t[1], t[2], t[3], BODT::min_dihedral_sine(t[0], t[1], t[2], t[3]));
+    const bool got = bounds.contains(t[0], t[1], t[2], t[3], BODT::internal::min_dihedral_sine(t[0], t[1], t[2], t[3]));
     if(clearly)
     {
       EXPECT_TRUE(got);
@@ -239,11 +239,11 @@ TEST(Quality_measure, BoundsAgreeWithTheAngles)
 TEST(Quality_measure, WorstFirstComparison)
 {
   std::vector<double> a = {0.5, 0.1, 0.9}, b = {0.2, 0.1};
-  EXPECT_EQ(BODT::compare_worst_first(a, b), 1);   // 0.1 ties, then 0.5 > 0.2
+  EXPECT_EQ(BODT::internal::compare_worst_first(a, b), 1);   // 0.1 ties, then 0.5 > 0.2
   std::vector<double> c = {0.3}, d = {0.4, 0.9};
-  EXPECT_EQ(BODT::compare_worst_first(c, d), -1);
+  EXPECT_EQ(BODT::internal::compare_worst_first(c, d), -1);
   std::vector<double> e = {0.3, 0.8}, f = {0.3};
-  EXPECT_EQ(BODT::compare_worst_first(e, f), 0);
+  EXPECT_EQ(BODT::internal::compare_worst_first(e, f), 0);
 }
 
 // Edge removal, the 3-2 flip among them: the ring around an axis edge, for
@@ -254,7 +254,7 @@ TEST(Quality_measure, WorstFirstComparison)
 // connectivity counts, moves alone do not.
 TEST(Flips, FailedCellsAreRetriedAfterTheirWaitAndAChange)
 {
-  BODT::Attempt_history h;
+  BODT::internal::Attempt_history h;
   h.retries_after_moves = 1;
   h.region_stamp.assign(10, 0);
   h.topology_stamp.assign(10, 0);
@@ -577,10 +577,10 @@ TEST(Quality_measure, LargestAngleMeasureOrdersByTheLargestAngle)
     for(auto& x : p) x = Point(u(rng), u(rng), u(rng));
     if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) std::swap(p[2], p[3]);
     if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) continue;
-    const double q = BODT::tet_quality(BODT::Quality_measure::largest_dihedral_angle, p[0], p[1], p[2], p[3]);
-    const double largest = BODT::min_max_dihedral_angle(p[0], p[1], p[2], p[3]).second;
+    const double q = BODT::internal::tet_quality(BODT::Quality_measure::largest_dihedral_angle, p[0], p[1], p[2], p[3]);
+    const double largest = BODT::internal::min_max_dihedral_angle(p[0], p[1], p[2], p[3]).second;
     EXPECT_NEAR(q, 1 + std::cos(largest * 3.14159265358979323846 / 180), 1e-9);
-    EXPECT_EQ(BODT::tet_quality(BODT::Quality_measure::largest_dihedral_angle, p[0], p[1], p[3], p[2]), -1);
+    EXPECT_EQ(BODT::internal::tet_quality(BODT::Quality_measure::largest_dihedral_angle, p[0], p[1], p[3], p[2]), -1);
     measured.emplace_back(largest, q);
   }
   std::sort(measured.begin(), measured.end());
@@ -592,7 +592,7 @@ TEST(Quality_measure, LargestAngleMeasureOrdersByTheLargestAngle)
     }
   }
   // A flat tetrahedron, its fourth vertex just above the opposite face: angles near 180 degrees.
-  const double flat = BODT::tet_quality(BODT::Quality_measure::largest_dihedral_angle, Point(0, 0, 0), Point(2, 0, 0),
+  const double flat = BODT::internal::tet_quality(BODT::Quality_measure::largest_dihedral_angle, Point(0, 0, 0), Point(2, 0, 0),
                                         Point(0, 2, 0), Point(0.5, 0.5, 1e-9));
   EXPECT_GE(flat, 0);
   EXPECT_LT(flat, 1e-6);

@@ -31,7 +31,7 @@ Exact exact_det(const Point& o, const Point& a, const Point& b, const Point& c)
   return ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
 }
 
-bool encloses(const BODT::Volume_change::Interval& i, const Exact& x)
+bool encloses(const BODT::internal::Volume_change::Interval& i, const Exact& x)
 {
   return Exact(i.inf()) <= x && x <= Exact(i.sup());
 }
@@ -63,7 +63,7 @@ TEST(VolumeChange, EnclosesTheExactChangeTightlyAtAnyScaleAndOffset)
     };
     const Point x0 = random_point(), a = random_point(), b = random_point(), c = random_point();
     const Point p = x0 + scale * 1e-3 * K::Vector_3(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
-    BODT::Volume_change change;
+    BODT::internal::Volume_change change;
     {
       CGAL::Protect_FPU_rounding<true> upward;
       change.add_move(3, x0, p, a, b, c);
@@ -83,8 +83,8 @@ TEST(VolumeChange, EnclosesTheExactChangeTightlyAtAnyScaleAndOffset)
 
 TEST(VolumeBudget, CostIsTheWorstSubdomainsShareAndTheBudgetNeverRunsOut)
 {
-  BODT::Volume_budget budget({{1, 6.0}, {2, 600.0}});
-  BODT::Volume_change change;
+  BODT::internal::Volume_budget budget({{1, 6.0}, {2, 600.0}});
+  BODT::internal::Volume_change change;
   {
     CGAL::Protect_FPU_rounding<true> upward;
     // Subdomain 1 gains 3e-11 (half its allowed 6e-11), subdomain 2 loses 6e-11 (a hundredth).
@@ -92,7 +92,7 @@ TEST(VolumeBudget, CostIsTheWorstSubdomainsShareAndTheBudgetNeverRunsOut)
     change.add_cell(2, -1, Point(0, 0, 0), Point(6e-11, 0, 0), Point(0, 6, 0), Point(0, 0, 1));
   }
   EXPECT_NEAR(budget.cost(change), 0.5, 1e-12);
-  BODT::Volume_change unknown;
+  BODT::internal::Volume_change unknown;
   {
     CGAL::Protect_FPU_rounding<true> upward;
     unknown.add_cell(7, 1, Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1));

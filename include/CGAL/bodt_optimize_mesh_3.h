@@ -108,42 +108,119 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
 } // namespace internal
 } // namespace BODT_3
 
-/// Smooths a tetrahedral mesh in place by boundary-optimized Delaunay triangulation
-/// (B-ODT), keeping its volume, features and subdomains. `mesh` is a
-/// `Mesh_complex_3_in_triangulation_3` (as `make_mesh_3` returns it) or a
-/// `Triangulation_3`. Called like `odt_optimize_mesh_3`, in CGAL 5.5's or CGAL 6's
-/// style:
-///
-///   CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::max_iteration_number = 20,
-///                                    CGAL::parameters::time_limit = 10);
-///   CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::max_iteration_number(20).time_limit(10));
-///
-/// Parameters (doc/manual.md describes each):
-///  - `time_limit` (seconds, default 0: none), `max_iteration_number` (default 20;
-///    0: until a sweep moves nothing or `convergence` is reached, at most 1000
-///    sweeps, as CGAL's optimizers), `convergence` (stop when no vertex moves by
-///    more than this fraction of its local size; default 0: off);
-///  - `moving_vertices`: `BODT_3::Moving_vertices::ALL` (B-ODT, default), `INTERIOR`
-///    (the original ODT, the paper's baseline) or `NONE` (no smoothing: topology
-///    optimization and insertion alone);
-///  - `preserve_features` (default true), `quality_guard` (default true);
-///  - `topology_optimization` (default true), `vertex_insertion` (default true),
-///    `max_vertex_insertions` (default -1: 5% of the input's vertices),
-///    `max_min_threshold` (default 0.34: stars whose worst dihedral sine is below it
-///    get max-min steps after the flips; 0: off);
-///  - `largest_angle_phase` (default true): after the iterations, a phase decided
-///    by the largest dihedral angle (flips and max-min steps at the cells with an
-///    angle above `largest_angle_threshold`, default 120 degrees, within the smallest
-///    and largest angles reached), then one decided by the minimum sine again;
-///  - `smoothing_method`: `BODT_3::Smoothing_method::BODT` (default) or `NODT`;
-///  - `number_of_threads` (default 0: every core the process may use): the
-///    smoothing sweeps run in parallel; the result does not depend on it;
-///  - `feature_edge_ratio`, `feature_corner_ratio`: tensor voting thresholds;
-///  - `progress_visitor`: an object with `after_classification(const BODT_3::Smoothing_result&)`
-///    and `after_iteration(const BODT_3::Iteration_stats&)`, copied.
-/// CGAL's `freeze_bound`, `do_freeze` and `sliver_bound` are compile errors that say why.
-/// Returns `MAX_ITERATION_NUMBER_REACHED`, `TIME_LIMIT_REACHED`, `CONVERGENCE_REACHED`, or
-/// `CANT_IMPROVE_ANYMORE` when a sweep changed nothing; `std::cout << code` prints the name.
+/*!
+ * \ingroup PkgBODT3Functions
+ * \brief Smooths a tetrahedral mesh in place by boundary-optimized Delaunay
+ * triangulation (B-ODT; Gao, Yu et al., Fig. 1), with flips, max-min steps and
+ * vertex insertion, keeping its volume, boundary, features and subdomains.
+ *
+ * Called like `odt_optimize_mesh_3`, with the named parameters in CGAL 5.5's style
+ * (`parameters::a = x, parameters::b = y`) or CGAL 6's (`parameters::a(x).b(y)`):
+ * \code
+ * CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::max_iteration_number = 20,
+ *                                  CGAL::parameters::time_limit = 10);
+ * CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::max_iteration_number(20).time_limit(10));
+ * \endcode
+ *
+ * \tparam Mesh a `Mesh_complex_3_in_triangulation_3` (as `make_mesh_3` returns it:
+ *   the cells in the complex are the mesh, each subdomain keeps its volume, the
+ *   protected curves and corners stay on their curves and in place) or a
+ *   `Triangulation_3` (`Delaunay_triangulation_3`, `Regular_triangulation_3`: the
+ *   finite cells are the mesh, the convex hull its boundary, which stays convex).
+ * \tparam Params named parameters, in one of the two styles.
+ *
+ * \param mesh the mesh, changed in place: points move, cells are flipped and a few
+ *   vertices are inserted (at most `max_vertex_insertions`).
+ * \param params a sequence of named parameters among those listed below.
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{time_limit}
+ *     \cgalParamDescription{seconds after which the run stops, checked after each iteration}
+ *     \cgalParamType{`double`} \cgalParamDefault{0: no limit}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_iteration_number}
+ *     \cgalParamDescription{iterations of the main phase, and the most each later phase runs;
+ *       0: until an iteration changes nothing or `convergence` is reached, at most 1000}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{20 (the paper's)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{convergence}
+ *     \cgalParamDescription{stop when no vertex moved by more than this fraction of its local size}
+ *     \cgalParamType{`double`} \cgalParamDefault{0: off (0.02 when `max_iteration_number` is 0)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{moving_vertices}
+ *     \cgalParamDescription{`ALL` (B-ODT), `INTERIOR` (the original ODT, the paper's baseline) or
+ *       `NONE` (topology optimization and insertion alone)}
+ *     \cgalParamType{`CGAL::BODT_3::Moving_vertices`} \cgalParamDefault{`ALL`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{smoothing_method}
+ *     \cgalParamDescription{`BODT`, or `NODT` (Natural ODT projected back on the input's boundary,
+ *       which does not keep the volume)}
+ *     \cgalParamType{`CGAL::BODT_3::Smoothing_method`} \cgalParamDefault{`BODT`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{preserve_features}
+ *     \cgalParamDescription{keep feature vertices on their curves and corners in place}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{quality_guard}
+ *     \cgalParamDescription{refuse a move that worsens the worst cells around the vertex}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{topology_optimization}
+ *     \cgalParamDescription{flips after each sweep (edge removal, multi-face removal, coplanar boundary flips)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_insertion}
+ *     \cgalParamDescription{splits of spades, caps, slivers and wedges (paper, Sec. 2.3)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_vertex_insertions}
+ *     \cgalParamDescription{at most this many new vertices; negative: 5% of the input's vertices}
+ *     \cgalParamType{`long long`} \cgalParamDefault{-1}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_min_threshold}
+ *     \cgalParamDescription{minimum dihedral sine below which a cell's vertices take max-min steps after
+ *       the flips; 0: off}
+ *     \cgalParamType{`double`} \cgalParamDefault{0.34 (about 20 degrees)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{largest_angle_phase}
+ *     \cgalParamDescription{after the iterations, a phase decided by the largest dihedral angle, then a
+ *       last one by the minimum sine, both without insertion}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{largest_angle_threshold}
+ *     \cgalParamDescription{degrees: in that phase, cells with a larger angle get flips and max-min steps}
+ *     \cgalParamType{`double`} \cgalParamDefault{120}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_threads}
+ *     \cgalParamDescription{threads of the sweeps and of the set-up; 0: every core the process may use.
+ *       The result does not depend on it}
+ *     \cgalParamType{`int`} \cgalParamDefault{0}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{feature_edge_ratio, feature_corner_ratio}
+ *     \cgalParamDescription{tensor-voting thresholds, used where the mesh carries no feature information}
+ *     \cgalParamType{`double`} \cgalParamDefault{0.05, 0.05}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{progress_visitor}
+ *     \cgalParamDescription{an object with `after_classification(const BODT_3::Smoothing_result&)` and
+ *       `after_iteration(const BODT_3::Iteration_stats&)`, copied}
+ *     \cgalParamType{a class} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ * CGAL's `freeze_bound`, `do_freeze` and `sliver_bound` are compile errors that say why.
+ *
+ * \return `MAX_ITERATION_NUMBER_REACHED`, `TIME_LIMIT_REACHED`, `CONVERGENCE_REACHED`, or
+ *   `CANT_IMPROVE_ANYMORE` when an iteration changed nothing; `std::cout << code` prints its name.
+ *
+ * \pre `mesh`'s triangulation has dimension 3 and its geometric traits compute in `double`
+ *   (`FT` is `double`, as with `Exact_predicates_inexact_constructions_kernel` and Mesh_3's
+ *   default triangulation): the constructions are done in doubles, every orientation test with
+ *   CGAL's exact predicates. Checked at compile time.
+ * \post No cell of the mesh is inverted or flat (exact orientation); every subdomain's volume is
+ *   kept to round-off; corners stay in place, curve vertices on their curve; no dihedral angle
+ *   leaves the range the input had.
+ *
+ * doc/manual.md describes every parameter and what the result contains.
+ */
 template <class Mesh, class... Params>
 std::enable_if_t<(BODT_3::internal::is_parameter<Params> && ...), Mesh_optimization_return_code>
 bodt_optimize_mesh_3(Mesh& mesh, const Params&... params)
@@ -151,11 +228,15 @@ bodt_optimize_mesh_3(Mesh& mesh, const Params&... params)
   return BODT_3::internal::optimize(mesh, params...);
 }
 
-/// The same with the domain of `odt_optimize_mesh_3(c3t3, domain, ...)`, so that a
-/// call to CGAL's optimizer can be changed by its name alone. The domain is not used:
-/// B-ODT moves a boundary vertex in the tangent plane of the current boundary (which
-/// keeps every subdomain's volume exactly) and needs no oracle. A later version may
-/// use it to project boundary vertices back onto the domain's surface.
+/*!
+ * \ingroup PkgBODT3Functions
+ * \brief The same with the domain of `odt_optimize_mesh_3(c3t3, domain, ...)`, so that a call to
+ * CGAL's optimizer can be changed by its name alone.
+ *
+ * \tparam Domain a model of `MeshDomain_3`. It is not used: B-ODT moves a boundary vertex in the
+ *   tangent plane of the current boundary, which keeps every subdomain's volume exactly and needs no
+ *   oracle. A second argument that is neither a domain nor a named parameter does not compile.
+ */
 template <class Mesh, class Domain, class... Params>
 std::enable_if_t<!BODT_3::internal::is_parameter<Domain>, Mesh_optimization_return_code>
 bodt_optimize_mesh_3(Mesh& mesh, const Domain&, const Params&... params)

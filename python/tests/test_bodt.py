@@ -7,9 +7,13 @@ the same C++ code) and BODT_TEST_TMP (a scratch folder).
 """
 
 import itertools
+import json
 import math
 import os
+import re
+import shutil
 import subprocess
+import sys
 import unittest
 
 import meshio
@@ -143,6 +147,110 @@ class Meshio(unittest.TestCase):
         mesh.write(vtu)
         back = meshio.read(vtu)
         np.testing.assert_array_equal(back.cell_data["medit:ref"][0], labels)
+
+
+class Quality(unittest.TestCase):
+    def setUp(self):
+        os.makedirs(TMP, exist_ok=True)
+
+    def test_quality_is_the_command_lines(self):
+        points, tets, labels = jittered_grid(two_labels=True)
+        path = os.path.join(TMP, "quality.mesh")
+        meshio.write(path, meshio.Mesh(points, [("tetra", tets)], cell_data={"medit:ref": [labels]}))
+        cli = json.loads(subprocess.run([BODT_BINARY, "quality", "--json", path], check=True, capture_output=True,
+                                        text=True).stdout)
+        self.assertEqual(bodt.quality(meshio.read(path)), cli)
+        self.assertEqual(bodt.quality(points, tets, labels), cli)
+        self.assertAlmostEqual(cli["min_dihedral_deg"], min_dihedral_deg(points, tets), 6)
+        self.assertEqual(sorted(cli["volume_per_subdomain"]), ["1", "2"])
+        # Its options, and the checks of smooth().
+        self.assertEqual(len(bodt.quality(points, tets, bins=90)["histogram"]["counts"]), 90)
+        self.assertIn("tets_below_30deg", bodt.quality(points, tets, small_angle=30))
+        with self.assertRaises(TypeError):
+            bodt.quality(points, tets, iterations=3)
+        with self.assertRaisesRegex(ValueError, "bins"):
+            bodt.quality(points, tets, bins=0)
+        bad = tets.copy()
+        bad[3, 1] = -1
+        with self.assertRaisesRegex(ValueError, r"tets\[3\] refers to vertex -1"):
+            bodt.quality(points, bad)
+
+
+class Progress(unittest.TestCase):
+    def test_progress_sees_every_sweep(self):
+        points, tets, labels = jittered_grid()
+        seen = []
+        _, report = bodt.smooth(points, tets, labels, max_iteration_number=4, progress=seen.append)
+        self.assertEqual(len(seen), report["result"]["iterations"])
+        self.assertEqual(seen, report["per_iteration"])
+        self.assertEqual([s["iteration"] for s in seen], list(range(1, len(seen) + 1)))
+
+    def test_an_exception_in_progress_stops_the_run(self):
+        points, tets, labels = jittered_grid()
+        calls = []
+
+        def stop_at_the_second(sweep):
+            calls.append(sweep["iteration"])
+            if len(calls) == 2:
+                raise KeyboardInterrupt("enough")
+
+        with self.assertRaisesRegex(KeyboardInterrupt, "enough"):
+            bodt.smooth(points, tets, labels, progress=stop_at_the_second)
+        self.assertEqual(calls, [1, 2])
+        with self.assertRaises(TypeError):
+            bodt.smooth(points, tets, labels, progress="print")
+
+
+class FeatureAngles(unittest.TestCase):
+    def test_angles_map_to_the_ratios(self):
+        points, tets, labels = jittered_grid()
+        _, report = bodt.smooth(points, tets, labels, max_iteration_number=1)
+        voting = report["options"]["tensor_voting"]
+        self.assertEqual((voting["edge_ratio"], voting["corner_ratio"]), (0.05, 0.05))
+        # The defaults the docstring gives are those of the library's ratios.
+        for name in ("feature_angle", "corner_angle"):
+            documented = float(re.search(r"%s \(([0-9.]+)\)" % name, bodt.smooth.__doc__).group(1))
+            self.assertAlmostEqual(documented, voting[name + "_deg"], 2)
+        _, report = bodt.smooth(points, tets, labels, max_iteration_number=1, feature_angle=40, corner_angle=50)
+        voting = report["options"]["tensor_voting"]
+        self.assertAlmostEqual(voting["edge_ratio"], math.tan(math.radians(20)) ** 2, 15)
+        self.assertAlmostEqual(voting["feature_angle_deg"], 40, 12)
+        self.assertAlmostEqual(voting["corner_angle_deg"], 50, 12)
+        with self.assertRaisesRegex(ValueError, "feature_angle"):
+            bodt.smooth(points, tets, feature_angle=0)
+        with self.assertRaisesRegex(ValueError, "corner_angle"):
+            bodt.smooth(points, tets, corner_angle=91)
+        with self.assertRaisesRegex(TypeError, "not both"):
+            bodt.smooth(points, tets, feature_angle=30, feature_edge_ratio=0.1)
+
+
+class Documentation(unittest.TestCase):
+    def test_every_function_and_option_is_documented(self):
+        for name in bodt.__all__:
+            if callable(getattr(bodt, name)):
+                self.assertGreater(len(getattr(bodt, name).__doc__ or ""), 100, name)
+        for name in bodt._bodt.option_names():
+            self.assertRegex(bodt.smooth.__doc__, r"\b%s\b" % name)
+        self.assertIn("progress", bodt.smooth.__doc__)
+        for option in ("bins", "small_angle", "large_angle", "threads"):
+            self.assertIn(option, bodt.quality.__doc__)
+        for field in bodt.Mesh._fields:
+            self.assertTrue(getattr(bodt.Mesh, field).__doc__, field)
+
+    def test_import_without_the_compiled_part_says_what_to_build(self):
+        # The package as a checkout has it, without _bodt: PYTHONPATH=python.
+        source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bodt", "__init__.py")
+        folder = os.path.join(TMP, "no_compiled_part")
+        shutil.rmtree(folder, ignore_errors=True)
+        os.makedirs(os.path.join(folder, "bodt"))
+        shutil.copy(source, os.path.join(folder, "bodt", "__init__.py"))
+        run = subprocess.run([sys.executable, "-c", "import bodt"], capture_output=True, text=True, cwd=folder,
+                             env=dict(os.environ, PYTHONPATH=folder))
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("compiled part of the module, bodt._bodt, is missing", run.stderr)
+        self.assertIn("pip install --no-build-isolation .", run.stderr)
+        self.assertIn("--target _bodt", run.stderr)
+        self.assertNotIn("circular import", run.stderr)
 
 
 if __name__ == "__main__":

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/commands.h"
 #include "cli/outputs.h"
+#include "report/json_report.h"
 
-#include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 

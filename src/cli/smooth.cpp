@@ -1,11 +1,13 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/commands.h"
+#include "cli/feature_angles.h"
 #include "cli/outputs.h"
 #include "cli/progress.h"
+#include "report/html_report.h"
+#include "report/json_report.h"
+#include "report/mesh_pictures.h"
 
-#include <CGAL/BODT_3/IO/html_report.h>
-#include <CGAL/BODT_3/IO/json_report.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/Return_code.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -13,9 +15,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 
 namespace bodt_cli {
 
@@ -25,11 +30,56 @@ namespace {
 
 struct Smooth_options
 {
-  std::string input, output, format, report, html, method = "bodt";
+  std::string input, output, format, report, html, cut, method = "bodt";
   BODT::Smoothing_options smoothing;
-  bool no_features = false, no_guard = false, no_flips = false, no_insertion = false, quiet = false;
+  bool no_features = false, no_guard = false, no_flips = false, no_insertion = false, quiet = false, json = false;
   bool no_largest_angle_phase = false;
+  // Degrees; used only when given (the library's ratios stay otherwise, bit for bit).
+  double feature_angle = 0, corner_angle = 0;
+  bool feature_angle_given = false, corner_angle_given = false;
 };
+
+std::string printf_string(const char* fmt, double x)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, x);
+  return buf;
+}
+
+// A CLI11 check of --feature-angle and --corner-angle: the ratios they map to run
+// over (0, 1], the angles over (0, 90] (feature_angles.h).
+std::string check_feature_angle(const std::string& text)
+{
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if(text.empty() || *end != '\0' || !(x > 0 && x <= 90)) return "an angle in degrees above 0 and at most 90";
+  return std::string();
+}
+
+std::string check_cut_plane(const std::string& text)
+{
+  try
+  {
+    bodt_report::parse_cut_plane(text);
+    return std::string();
+  }
+  catch(const std::invalid_argument& e)
+  {
+    return e.what();
+  }
+}
+
+// How the run found features, for the page.
+std::string features_text(const Smooth_options& o, const BODT::Smoothing_result& result)
+{
+  const BODT::Tensor_voting_options& tv = o.smoothing.tensor_voting;
+  if(!o.smoothing.preserve_features) return "not preserved (--no-features)";
+  if(!result.used_tensor_voting)
+    return o.smoothing.moving_vertices == BODT::Moving_vertices::ALL ? "the mesh's own (edges, corners, patches)"
+                                                                      : "boundary vertices do not move";
+  return "by tensor voting: feature angle " + printf_string("%.2f", angle_of_edge_ratio(tv.edge_ratio)) +
+         " deg, corner angle " + printf_string("%.2f", angle_of_corner_ratio(tv.corner_ratio)) + " deg";
+}
 
 const char* const smooth_description =
     "Improves the dihedral angles of a tetrahedral mesh. Each sweep moves the vertices\n"
@@ -40,13 +90,6 @@ const char* const smooth_description =
     "or raise the largest dihedral angle around its vertex. Prints the quality before\n"
     "and after. Every output path is checked before the work starts; outputs are written\n"
     "to a temporary file and renamed, and the reports appear only with the mesh.";
-
-std::string printf_string(const char* fmt, double x)
-{
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, x);
-  return buf;
-}
 
 void print_table(const BODT::Quality_report& before, const BODT::Quality_report& after,
                  const BODT::Smoothing_result& result, std::size_t vertices)
@@ -84,6 +127,12 @@ int run_smooth(Smooth_options o)
   opt.largest_angle_phase = !o.no_largest_angle_phase;
   if(o.method == "flips" && o.no_flips)
     throw Usage_error("--method flips with --no-flips would change nothing");
+  if((o.feature_angle_given || o.corner_angle_given) && o.no_features)
+    throw Usage_error("--feature-angle and --corner-angle say how features are found; --no-features keeps none");
+  if(o.feature_angle_given) opt.tensor_voting.edge_ratio = edge_ratio_of_angle(o.feature_angle);
+  if(o.corner_angle_given) opt.tensor_voting.corner_ratio = corner_ratio_of_angle(o.corner_angle);
+  std::optional<bodt_report::Cut_plane> cut;
+  if(!o.cut.empty()) cut = bodt_report::parse_cut_plane(o.cut);
 
   // Everything that can be refused is refused before the work starts.
   check_input_path(o.input);
@@ -110,18 +159,30 @@ int run_smooth(Smooth_options o)
   if(before.inverted_tets > 0)
     throw std::runtime_error(o.input + ": " + std::to_string(before.inverted_tets) +
                              " tetrahedra of the mesh are flat; smoothing needs a valid mesh");
+  if(cut && !bodt_report::plane_meets_mesh(*cut, mesh))
+    throw Usage_error("--cut " + o.cut + ": the plane misses the mesh");
+  // The page draws the input beside the result.
+  std::optional<BODT::Tet_mesh> input;
+  if(!o.html.empty()) input = mesh;
   Progress progress(o.quiet, opt);
   const BODT::Smoothing_result result = BODT::smooth(mesh, opt, progress);
   progress.finish();
   const double smoothing_seconds = lap();
   const BODT::Quality_report after = BODT::mesh_quality(mesh, measures);
   quality_seconds += lap();
+  if((o.feature_angle_given || o.corner_angle_given) && !result.used_tensor_voting && !o.quiet)
+    std::cerr << "bodt smooth: --feature-angle and --corner-angle were not used: "
+              << (opt.moving_vertices == BODT::Moving_vertices::ALL
+                      ? "the mesh carries the dimension of every vertex"
+                      : "boundary vertices do not move with --method " + o.method)
+              << "\n";
 
   // The reports are made in memory and staged, so that a failure writing the mesh leaves no report.
   Staged_files side_files;
-  if(!o.report.empty())
+  nlohmann::json report;
+  if(!o.report.empty() || o.json)
   {
-    nlohmann::json report = BODT::smoothing_report(opt, result, progress.iterations(), before, after);
+    report = BODT::smoothing_report(opt, result, progress.iterations(), before, after);
     report["bodt_version"] = BODT_VERSION;
     report["input"] = o.input;
     report["output"] = o.output;
@@ -130,7 +191,7 @@ int run_smooth(Smooth_options o)
     report["process_seconds"] = {{"read", read_seconds},
                                  {"quality_before_and_after", quality_seconds},
                                  {"smoothing", smoothing_seconds}};
-    side_files.stage(o.report, report.dump(1) + "\n");
+    if(!o.report.empty()) side_files.stage(o.report, report.dump(1) + "\n");
   }
   if(!o.html.empty())
   {
@@ -147,12 +208,22 @@ int run_smooth(Smooth_options o)
         {"flips", std::to_string(result.topology.total())},
         {"inserted vertices", std::to_string(result.insertion.vertices_added)},
         {"relative volume change", printf_string("%.2e", (after.volume - before.volume) / before.volume)},
+        {"features", features_text(o, result)},
         {"output", o.output}};
-    side_files.stage(o.html, BODT::html_report(o.input, before, after, run));
+    bodt_report::Picture_options pictures;
+    pictures.feature_angle = angle_of_edge_ratio(opt.tensor_voting.edge_ratio);
+    pictures.cut = cut;
+    pictures.threads = opt.threads;
+    side_files.stage(o.html, BODT::html_report(o.input, before, after, run,
+                                               bodt_report::mesh_pictures_html(*input, mesh, pictures)));
   }
   write_output(o.output, mesh, output_format, opt.threads);
   side_files.commit();
-  if(!o.quiet) print_table(before, after, result, mesh.points.size());
+  // Standard output holds the JSON alone, for scripts; messages stay on stderr.
+  if(o.json)
+    std::cout << report.dump() << "\n";
+  else if(!o.quiet)
+    print_table(before, after, result, mesh.points.size());
   return 0;
 }
 
@@ -204,12 +275,43 @@ Command add_smooth(CLI::App& command)
   command.add_option("--threads", o->smoothing.threads,
                      "threads of the reading, quality reports, smoothing and writing (default 0: every core); the output does not depend on it")
       ->check(CLI::Range(0, 4096));
+  CLI::Option* feature_angle =
+      command
+          .add_option("--feature-angle", o->feature_angle,
+                      "in a mesh with no feature information (edges, corners, surface patches), tensor voting takes "
+                      "as features the edges where the surface turns by more than DEG degrees, in (0, 90] "
+                      "(default " + printf_string("%.2f", angle_of_edge_ratio(BODT::Tensor_voting_options().edge_ratio)) +
+                      ", the library's feature_edge_ratio 0.05); larger: fewer features, more vertices free to move")
+          ->check(CLI::Validator(check_feature_angle, "DEG"));
+  CLI::Option* corner_angle =
+      command
+          .add_option("--corner-angle", o->corner_angle,
+                      "... and as corners the vertices where three sides meet with normals more than DEG degrees "
+                      "apart, in (0, 90] (default " +
+                      printf_string("%.2f", angle_of_corner_ratio(BODT::Tensor_voting_options().corner_ratio)) +
+                      ", the library's feature_corner_ratio 0.05; a cube corner: 90)")
+          ->check(CLI::Validator(check_feature_angle, "DEG"));
   command.add_option("--report", o->report, "write a JSON report: options, every sweep, quality before and after");
-  command.add_option("--html", o->html,
-                     "write a self-contained HTML page: quality table, subdomain volumes and the dihedral-angle "
-                     "histograms before and after on one axis");
+  CLI::Option* html =
+      command.add_option("--html", o->html,
+                         "write a self-contained HTML page: quality table, subdomain volumes, the dihedral-angle "
+                         "histograms before and after on one axis, and pictures of the surface and of a cut before "
+                         "and after, cells coloured by their smallest dihedral angle, the worst ones ringed");
+  command
+      .add_option("--cut", o->cut,
+                  "the plane of the page's cut: x=V, y=V, z=V or PX,PY,PZ,NX,NY,NZ (a point and a normal; default: "
+                  "through the input's worst tetrahedron, facing the surface pictures' viewer)")
+      ->check(CLI::Validator(check_cut_plane, "PLANE"))
+      ->needs(html);
+  command.add_flag("--json", o->json,
+                   "print the report (what --report writes) on standard output as one line of JSON, instead of the "
+                   "table");
   command.add_flag("-q,--quiet", o->quiet, "print nothing but errors");
-  return [o]() { return run_smooth(*o); };
+  return [o, feature_angle, corner_angle]() {
+    o->feature_angle_given = feature_angle->count() > 0;
+    o->corner_angle_given = corner_angle->count() > 0;
+    return run_smooth(*o);
+  };
 }
 
 } // namespace bodt_cli

@@ -5,8 +5,9 @@
 // generated from the measured numbers), as JSON, and as SVG histograms.
 #include "compare/compare.h"
 
-#include <CGAL/BODT_3/IO/json_report.h>
-#include <CGAL/BODT_3/IO/svg_histogram.h>
+#include "report/json_report.h"
+#include "report/svg_histogram.h"
+
 #include <CGAL/BODT_3/IO/write_atomically.h>
 #include <CGAL/version.h>
 

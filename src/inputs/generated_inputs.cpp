@@ -293,7 +293,7 @@ Sliver_score sliver_score(const Indexed_delaunay& dt, double bound_cosine)
   Sliver_score score;
   for(auto c : dt.finite_cell_handles())
   {
-    const std::array<double, 6> cosines = CGAL::BODT_3::dihedral_cosines(
+    const std::array<double, 6> cosines = CGAL::BODT_3::internal::dihedral_cosines(
         c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
     const double worst = *std::max_element(cosines.begin(), cosines.end());
     if(worst > bound_cosine) ++score.below;

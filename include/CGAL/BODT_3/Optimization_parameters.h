@@ -21,6 +21,8 @@
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Smoothing_result.h>
 
+#include <CGAL/assertions.h>
+
 #include <CGAL/boost/parameter.h>
 
 #include <boost/parameter/name.hpp>

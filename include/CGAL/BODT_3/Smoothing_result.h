@@ -6,9 +6,20 @@
 #include <CGAL/Mesh_optimization_return_code.h>
 
 #include <cstddef>
+#include <tuple>
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
+
+// Adds every counter `Stats::counters()` lists of `from` to `to`.
+template <class Stats>
+void add_counters(Stats& to, const Stats& from)
+{
+  std::apply([&](auto... member) { ((to.*member += from.*member), ...); }, Stats::counters());
+}
+
+} // namespace internal
 
 /// What a flip pass did: accepted flips by kind.
 struct Topology_stats
@@ -21,14 +32,15 @@ struct Topology_stats
   double seconds = 0;                    // the pass, with the search for the cells it starts from
 
   std::size_t total() const { return flips_2_3 + flips_3_2 + edge_removals + multi_face_removals; }
+  static constexpr auto counters()
+  {
+    using S = Topology_stats;
+    return std::make_tuple(&S::flips_2_3, &S::flips_3_2, &S::edge_removals, &S::multi_face_removals,
+                           &S::boundary_flips, &S::seconds);
+  }
   Topology_stats& operator+=(const Topology_stats& o)
   {
-    flips_2_3 += o.flips_2_3;
-    flips_3_2 += o.flips_3_2;
-    edge_removals += o.edge_removals;
-    multi_face_removals += o.multi_face_removals;
-    boundary_flips += o.boundary_flips;
-    seconds += o.seconds;
+    internal::add_counters(*this, o);
     return *this;
   }
 };
@@ -37,20 +49,22 @@ struct Topology_stats
 struct Insertion_stats
 {
   std::size_t spade_splits = 0;     // an edge split at the projection of the opposite vertex
+  std::size_t wedge_splits = 0;     // the long edge split at the projection of the short edge's middle
   std::size_t cap_splits = 0;       // a face split at the projection of the opposite vertex
   std::size_t sliver_splits = 0;    // both opposite edges split (two vertices)
   std::size_t undone = 0;           // insertions tried and undone, since they did not improve
   std::size_t vertices_added = 0;
   double seconds = 0;               // the pass, with the search for the cells it starts from
 
+  static constexpr auto counters()
+  {
+    using S = Insertion_stats;
+    return std::make_tuple(&S::spade_splits, &S::wedge_splits, &S::cap_splits, &S::sliver_splits, &S::undone,
+                           &S::vertices_added, &S::seconds);
+  }
   Insertion_stats& operator+=(const Insertion_stats& o)
   {
-    spade_splits += o.spade_splits;
-    cap_splits += o.cap_splits;
-    sliver_splits += o.sliver_splits;
-    undone += o.undone;
-    vertices_added += o.vertices_added;
-    seconds += o.seconds;
+    internal::add_counters(*this, o);
     return *this;
   }
 };
@@ -72,8 +86,10 @@ struct Iteration_stats
   std::size_t max_min_moves = 0;      // vertices moved by the max-min fallback
   double max_relative_move = 0;       // largest move / local size
   Topology_stats topology;            // the flip pass after the sweep
-  Insertion_stats insertion;          // the insertion pass before the sweep
+  Insertion_stats insertion;          // the insertion pass that ends the iteration
   double sweep_seconds = 0;           // time of the sweep alone
+  double max_min_seconds = 0;         // of the max-min steps
+  double reread_seconds = 0;          // of re-reading the flat view after the flips and the insertion
   double seconds = 0;                 // since the start of the smoothing
 };
 

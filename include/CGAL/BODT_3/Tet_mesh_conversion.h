@@ -589,7 +589,7 @@ private:
 template <class C3T3>
 void tet_mesh_to_c3t3(const Tet_mesh& mesh, C3T3& c3t3, const std::string& file = std::string(),
                       std::vector<typename C3T3::Vertex_handle>* handles = nullptr,
-                      const Tet_face_matching* faces = nullptr)
+                      const internal::Tet_face_matching* faces = nullptr)
 {
   using namespace internal;
   using Surface_patch_index = typename C3T3::Surface_patch_index;

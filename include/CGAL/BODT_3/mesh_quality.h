@@ -80,7 +80,7 @@ public:
   template <class Point>
   void add(const Point& p0, const Point& p1, const Point& p2, const Point& p3, int subdomain, int boundary_vertices)
   {
-    const auto angles = dihedral_angles(p0, p1, p2, p3);
+    const auto angles = internal::dihedral_angles(p0, p1, p2, p3);
     double lo = angles[0], hi = angles[0];
     const int bins = static_cast<int>(r_.histogram.size());
     for(double a : angles)
@@ -100,10 +100,10 @@ public:
       else if(boundary_vertices < 4) ++r_.bad_tets_touching_boundary;
       else ++r_.bad_tets_all_vertices_on_boundary;
     }
-    const double rr = radius_ratio(p0, p1, p2, p3);
+    const double rr = internal::radius_ratio(p0, p1, p2, p3);
     r_.min_radius_ratio = std::min(r_.min_radius_ratio, rr);
     rr_sum_ += rr;
-    const double v = tet_volume(p0, p1, p2, p3);
+    const double v = internal::tet_volume(p0, p1, p2, p3);
     r_.volume += v;
     r_.volume_per_subdomain[subdomain] += v;
     if(CGAL::orientation(p0, p1, p2, p3) != CGAL::POSITIVE) ++r_.inverted_tets;
@@ -159,13 +159,13 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
   // A face is on the boundary or an interface unless two mesh tets of one label
   // share it; each vertex looks at the faces around it (in parallel).
   std::vector<char> on_boundary(mesh.points.size(), 0);
-  Thread_workers<char> workers(opt.threads);
+  internal::Thread_workers<char> workers(opt.threads);
   {
     std::vector<std::array<int, 4>> some;   // a copy only when some tetrahedra are not measured
     if(measured.size() < mesh.tets.size())
       for(std::size_t t : measured) some.push_back(mesh.tets[t]);
     const auto& cells = measured.size() < mesh.tets.size() ? some : mesh.tets;
-    const Tet_face_matching faces(cells, mesh.points.size(), opt.threads);
+    const internal::Tet_face_matching faces(cells, mesh.points.size(), opt.threads);
     workers.for_each(0, static_cast<int>(mesh.points.size()), [&](char&, int v) {
       const int first = faces.vertex_cells_begin[v], last = faces.vertex_cells_begin[v + 1];
       used[static_cast<std::size_t>(v)] = first < last ? 1 : 0;
@@ -185,7 +185,7 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
     }, 1024);
   }
   // Blocks of a fixed size, merged in order: the sums do not depend on the threads.
-  std::vector<Quality_accumulator> parts(static_cast<std::size_t>(block_count(measured.size())),
+  std::vector<Quality_accumulator> parts(static_cast<std::size_t>(internal::block_count(measured.size())),
                                          Quality_accumulator(opt));
   workers.for_blocks(measured.size(), [&](char&, int b, std::size_t begin, std::size_t end) {
     Quality_accumulator& acc = parts[static_cast<std::size_t>(b)];
@@ -253,7 +253,7 @@ mesh_quality(const Tr& tr, const Quality_options& opt = Quality_options())
   return acc.result(tr.number_of_vertices());
 }
 
-// The report as JSON: CGAL/BODT_3/IO/json_report.h.
+// The report as JSON: src/report/json_report.h (the tools', not the package's).
 
 /// The report as a few lines of text for people.
 inline void print_report(std::ostream& out, const Quality_report& r)

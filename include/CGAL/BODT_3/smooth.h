@@ -25,34 +25,66 @@
 namespace CGAL {
 namespace BODT_3 {
 
-/// The pipeline (optimize_mesh.h) on a `Mesh_complex_3_in_triangulation_3`: the
-/// cells in the complex are the mesh, each subdomain keeps its volume, and the
-/// features the complex knows (Mesh_3's protected curves and corners, surface
-/// patches) are kept. Flips and insertion change the complex's triangulation.
+namespace internal {
+
+// The package computes constructions in doubles (its flat arrays, its moves), and
+// every orientation test with CGAL's exact predicates.
+template <class Tr>
+constexpr void require_double_coordinates()
+{
+  static_assert(std::is_same<typename Tr::Geom_traits::FT, double>::value,
+                "BODT_3 needs a triangulation whose geometric traits compute in double (FT = double), such as "
+                "Exact_predicates_inexact_constructions_kernel or Mesh_3's default triangulation");
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgBODT3Functions
+ * \brief Runs the pipeline (`internal::Mesh_optimizer`) on a `Mesh_complex_3_in_triangulation_3`:
+ * the cells in the complex are the mesh, each subdomain keeps its volume, and the features the
+ * complex knows (Mesh_3's protected curves and corners, surface patches) are kept. Flips and
+ * insertion change the complex's triangulation; the facets' surface centers are set again
+ * afterwards, so that CGAL's optimizers can run on the result.
+ *
+ * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3` whose triangulation computes in `double`.
+ * \tparam Visitor has `after_classification(const Smoothing_result&)` and
+ *   `after_iteration(const Iteration_stats&)`.
+ * \pre `c3t3.triangulation().dimension() == 3`.
+ */
 template <class C3T3, class Visitor = Null_smoothing_visitor>
 std::enable_if_t<internal::Is_c3t3<C3T3>::value, Smoothing_result>
 smooth(C3T3& c3t3, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
-  C3t3_adapter<C3T3> labels(c3t3);
-  auto classify = [&c3t3](const auto& view, const Classification_options& opt) {
-    return classify_vertices(view.mesh(), c3t3_feature_hints(c3t3, view), opt);
+  internal::require_double_coordinates<typename C3T3::Triangulation>();
+  internal::C3t3_adapter<C3T3> adapter(c3t3);
+  auto classify = [&c3t3](const auto& view, const internal::Classification_options& opt) {
+    return internal::classify_vertices(view.mesh(), internal::c3t3_feature_hints(c3t3, view), opt);
   };
-  Smoothing_result result = optimize_mesh(labels, classify, options, visitor);
+  Smoothing_result result = internal::optimize_mesh(adapter, classify, options, visitor);
   // The boundary moved and its facets changed: CGAL's optimizers, run after ours, read these.
-  set_facet_surface_centers(c3t3);
+  internal::set_facet_surface_centers(c3t3);
   return result;
 }
 
-/// The pipeline on a `Triangulation_3`: its finite cells are the mesh, its convex
-/// hull the boundary, and the hull stays convex. Features are found by tensor
-/// voting. A Delaunay triangulation is in general no longer Delaunay afterwards.
+/*!
+ * \ingroup PkgBODT3Functions
+ * \brief Runs the pipeline on a `Triangulation_3`: its finite cells are the mesh (one subdomain),
+ * its convex hull the boundary, and the hull stays convex. Features are found by tensor voting. A
+ * Delaunay triangulation is in general no longer Delaunay afterwards.
+ *
+ * \tparam Tr a `Triangulation_3`, `Delaunay_triangulation_3` or `Regular_triangulation_3` whose
+ *   geometric traits compute in `double`.
+ * \pre `tr.dimension() == 3`.
+ */
 template <class Tr, class Visitor = Null_smoothing_visitor>
 std::enable_if_t<!internal::Is_c3t3<Tr>::value && !std::is_same<Tr, Tet_mesh>::value, Smoothing_result>
 smooth(Tr& tr, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
-  Triangulation_3_adapter<Tr> labels(tr);
-  const Feature_hints none;
-  return optimize_mesh(labels, Classify_by_hints{none}, options, visitor);
+  internal::require_double_coordinates<Tr>();
+  internal::Triangulation_3_adapter<Tr> adapter(tr);
+  const internal::Feature_hints none;
+  return internal::optimize_mesh(adapter, internal::Classify_by_hints{none}, options, visitor);
 }
 
 namespace internal {
@@ -122,7 +154,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   CGAL::Real_timer timer;
   timer.start();
   // The classification reads the file's own feature information.
-  Flat_mesh<K> flat;
+  internal::Flat_mesh<K> flat;
   flat.threads = options.threads;
   flat.points = tm.points;
   flat.cells = tm.tets;
@@ -131,13 +163,13 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   for(std::size_t t = 0; t < tm.tets.size(); ++t) flat.in_mesh[t] = tm.in_mesh(t, all_zero) ? 1 : 0;
   flat.subdomain = tm.tet_labels;
   // The faces are matched once, for this flat copy and for the triangulation.
-  std::optional<Tet_face_matching> faces(std::in_place, tm.tets, tm.points.size(), options.threads);
+  std::optional<internal::Tet_face_matching> faces(std::in_place, tm.tets, tm.points.size(), options.threads);
   flat.set_neighbors(*faces);
   flat.build_incidences();
-  Tet_mesh_constraints constraints = find_constraints(tm, flat);
+  internal::Tet_mesh_constraints constraints = find_constraints(tm, flat);
   flat.subdomain = constraints.subdomain;
 
-  Feature_hints hints;
+  internal::Feature_hints hints;
   const bool some_labelled = std::any_of(tm.edge_labels.begin(), tm.edge_labels.end(), [](int l) { return l != 0; });
   for(std::size_t e = 0; e < tm.edges.size(); ++e)
     if(!tm.ridges.empty() || !some_labelled || tm.edge_labels[e] != 0) hints.feature_edges.push_back(tm.edges[e]);
@@ -147,9 +179,9 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
 
   // Classified before the triangulation is built, so that the flat copy is gone by then.
   const double classification_start = timer.time();
-  const Vertex_classification by_file = classify_vertices(flat, hints, classification_options(options));
-  flat = Flat_mesh<K>();
-  const double classification = timer.time() - classification_start;
+  const internal::Vertex_classification by_file = internal::classify_vertices(flat, hints, internal::classification_options(options));
+  flat = internal::Flat_mesh<K>();
+  const double classification_seconds = timer.time() - classification_start;
 
   Tet_mesh_c3t3 c3t3;
   std::vector<Tet_mesh_c3t3::Vertex_handle> handles;
@@ -160,10 +192,10 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
   internal::add_constraints_to_complex(tm, constraints, handles, c3t3);
 
-  C3t3_adapter<Tet_mesh_c3t3> labels(c3t3, false);
-  auto classify = [&](const auto& view, const Classification_options&) {
-    Vertex_classification classification;
-    classification.kind.assign(view.vertices().size(), Vertex_kind::fixed);
+  internal::C3t3_adapter<Tet_mesh_c3t3> adapter(c3t3, false);
+  auto classify = [&](const auto& view, const internal::Classification_options&) {
+    internal::Vertex_classification classification;
+    classification.kind.assign(view.vertices().size(), internal::Vertex_kind::fixed);
     classification.curve_neighbors.assign(view.vertices().size(), {-1, -1});
     classification.used_tensor_voting = by_file.used_tensor_voting;
     classification.non_manifold = by_file.non_manifold;
@@ -182,7 +214,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   };
   internal::Constraint_counting_visitor<Visitor> counting{visitor, constraints};
   const double conversion = timer.time();
-  Smoothing_result r = optimize_mesh(labels, classify, options, counting);
+  Smoothing_result r = internal::optimize_mesh(adapter, classify, options, counting);
   counting.fill(r);
   const double back = timer.time();
   update_tet_mesh(tm, c3t3, handles, options.threads);
@@ -191,8 +223,8 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
     const auto it = constraints.file_label.find(l);
     if(it != constraints.file_label.end()) l = it->second;
   }
-  r.phases.conversion = conversion - classification + timer.time() - back;
-  r.phases.setup += classification;
+  r.phases.conversion = conversion - classification_seconds + timer.time() - back;
+  r.phases.setup += classification_seconds;
   return r;
 }
 

@@ -195,7 +195,7 @@ public:
                 << "; only points, lines, triangles and 4-node tetrahedra are read\n";
 
     mesh_.vertex_refs.assign(mesh_.points.size(), 0);
-    check_and_orient(mesh_, src_, warnings_);
+    BODT_3::internal::check_and_orient(mesh_, src_, warnings_);
     return std::move(mesh_);
   }
 
@@ -812,7 +812,7 @@ private:
   Byte_reader bin_;
   std::ostream& warnings_;
   Tet_mesh mesh_;
-  Tet_mesh_source src_;
+  BODT_3::internal::Tet_mesh_source src_;
   int version_ = 0;
   bool binary_ = false;
   bool have_entities_ = false;

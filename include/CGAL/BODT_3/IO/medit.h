@@ -104,7 +104,7 @@ inline Tet_mesh parse_medit(const std::string& file, std::string_view text, std:
 {
   Token_reader in(file, text);
   Tet_mesh mesh;
-  Tet_mesh_source src;
+  BODT_3::internal::Tet_mesh_source src;
   src.file = file;
   bool have_vertices = false, have_dimension = false;
   // Indices into sections that may come before the section they refer to are checked
@@ -278,7 +278,7 @@ inline Tet_mesh parse_medit(const std::string& file, std::string_view text, std:
   check_refs(required, required_lines, mesh.points.size(), "RequiredVertices", "vertex", mesh.required_vertices);
   check_refs(ridges, ridge_lines, mesh.edges.size(), "Ridges", "edge", mesh.ridges);
 
-  check_and_orient(mesh, src, warnings, threads);
+  BODT_3::internal::check_and_orient(mesh, src, warnings, threads);
   return mesh;
 }
 

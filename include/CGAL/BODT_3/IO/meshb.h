@@ -164,9 +164,9 @@ public:
     resolve(required_ids, mesh_.points.size(), "RequiredVertices", "vertex", mesh_.required_vertices);
     resolve(ridge_ids, mesh_.edges.size(), "Ridges", "edge", mesh_.ridges);
 
-    Tet_mesh_source src;
+    BODT_3::internal::Tet_mesh_source src;
     src.file = in_.file();
-    check_and_orient(mesh_, src, warnings_);
+    BODT_3::internal::check_and_orient(mesh_, src, warnings_);
     return std::move(mesh_);
   }
 

@@ -110,7 +110,7 @@ inline Tet_mesh parse_tetgen(const Texts& t, std::ostream& warnings)
       mesh.vertex_refs.push_back(markers ? in.next_int("a boundary marker") : 0);
     }
   }
-  Tet_mesh_source src;
+  BODT_3::internal::Tet_mesh_source src;
   src.file = t.ele_file;
   {
     Token_reader in(t.ele_file, t.ele);
@@ -178,7 +178,7 @@ inline Tet_mesh parse_tetgen(const Texts& t, std::ostream& warnings)
       in.rest_of_line();
     }
   }
-  check_and_orient(mesh, src, warnings);
+  BODT_3::internal::check_and_orient(mesh, src, warnings);
   return mesh;
 }
 
@@ -232,38 +232,30 @@ inline void write_node(std::ostream& s, const Tet_mesh& mesh)
   }
 }
 
-inline void write_ele(std::ostream& s, const Tet_mesh& mesh)
+// A TetGen element list: a header "count, per-element size, markers" and, per
+// element, its number, its vertices from 1 and its label.
+template <class Element>
+void write_elements(std::ostream& s, const std::vector<Element>& elements, const std::vector<int>& labels,
+                    const char* header_rest)
 {
   internal::Output_buffer out(s);
-  out.put_int(mesh.tets.size()).put(" 4 1\n");
-  for(std::size_t i = 0; i < mesh.tets.size(); ++i)
+  out.put_int(elements.size()).put(header_rest);
+  for(std::size_t i = 0; i < elements.size(); ++i)
   {
     out.put_int(i + 1);
-    for(int v : mesh.tets[i]) out.put(' ').put_int(v + 1);
-    out.put(' ').put_int(mesh.tet_labels[i]).put('\n');
+    for(int v : elements[i]) out.put(' ').put_int(v + 1);
+    out.put(' ').put_int(labels[i]).put('\n');
   }
 }
+
+inline void write_ele(std::ostream& s, const Tet_mesh& mesh) { write_elements(s, mesh.tets, mesh.tet_labels, " 4 1\n"); }
 
 inline void write_face(std::ostream& s, const Tet_mesh& mesh)
 {
-  internal::Output_buffer out(s);
-  out.put_int(mesh.triangles.size()).put(" 1\n");
-  for(std::size_t i = 0; i < mesh.triangles.size(); ++i)
-  {
-    out.put_int(i + 1);
-    for(int v : mesh.triangles[i]) out.put(' ').put_int(v + 1);
-    out.put(' ').put_int(mesh.triangle_labels[i]).put('\n');
-  }
+  write_elements(s, mesh.triangles, mesh.triangle_labels, " 1\n");
 }
 
-inline void write_edge(std::ostream& s, const Tet_mesh& mesh)
-{
-  internal::Output_buffer out(s);
-  out.put_int(mesh.edges.size()).put(" 1\n");
-  for(std::size_t i = 0; i < mesh.edges.size(); ++i)
-    out.put_int(i + 1).put(' ').put_int(mesh.edges[i][0] + 1).put(' ').put_int(mesh.edges[i][1] + 1).put(' ')
-       .put_int(mesh.edge_labels[i]).put('\n');
-}
+inline void write_edge(std::ostream& s, const Tet_mesh& mesh) { write_elements(s, mesh.edges, mesh.edge_labels, " 1\n"); }
 
 inline void write(std::ostream& node, std::ostream& ele, std::ostream& face, std::ostream& edge, const Tet_mesh& mesh)
 {

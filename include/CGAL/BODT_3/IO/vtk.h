@@ -243,9 +243,9 @@ public:
     if(labels.empty())
       warnings_ << "warning: " << in_.file() << ": no cell data array of labels ('label', 'medit:ref', "
                    "'gmsh:physical', ...); every cell gets label 0\n";
-    Tet_mesh_source src;
+    BODT_3::internal::Tet_mesh_source src;
     src.file = in_.file();
-    check_and_orient(mesh_, src, warnings_);
+    BODT_3::internal::check_and_orient(mesh_, src, warnings_);
     return std::move(mesh_);
   }
 

@@ -159,9 +159,9 @@ public:
     if(!labels)
       warnings_ << "warning: " << file_ << ": no cell data array of labels ('label', 'medit:ref', "
                    "'gmsh:physical', ...); every cell gets label 0\n";
-    Tet_mesh_source src;
+    BODT_3::internal::Tet_mesh_source src;
     src.file = file_;
-    check_and_orient(mesh, src, warnings_);
+    BODT_3::internal::check_and_orient(mesh, src, warnings_);
     return mesh;
   }
 

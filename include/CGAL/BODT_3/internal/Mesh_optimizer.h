@@ -5,14 +5,19 @@
 
 #include <CGAL/BODT_3/Smoothing_options.h>
 #include <CGAL/BODT_3/Smoothing_result.h>
-#include <CGAL/BODT_3/internal/Smoothing/Smoothing_sweep.h>
-#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
-#include <CGAL/BODT_3/internal/Mesh/Flat_view.h>
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
-#include <CGAL/BODT_3/internal/Topology/flip_pass.h>
 #include <CGAL/BODT_3/internal/Insertion/insertion_pass.h>
+#include <CGAL/BODT_3/internal/Mesh/Flat_view.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
+#include <CGAL/BODT_3/internal/Smoothing/Smoothing_sweep.h>
+#include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
+#include <CGAL/BODT_3/internal/Topology/flip_pass.h>
+#include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
+#include <CGAL/BODT_3/internal/Utilities/Candidate_cell.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/id_keys.h>
 
+#include <CGAL/Mesh_optimization_return_code.h>
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
@@ -24,6 +29,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Classifies the vertices of a view from the features the input knows.
 struct Classify_by_hints
@@ -40,333 +46,455 @@ struct Classify_by_hints
 /// How the vertices are classified for a run with options `opt`.
 inline Classification_options classification_options(const Smoothing_options& opt)
 {
-  Classification_options copt;
-  copt.move_boundary = opt.moving_vertices == Moving_vertices::ALL;
-  copt.preserve_features = opt.preserve_features;
-  copt.tensor_voting = opt.tensor_voting;
-  return copt;
+  Classification_options classification;
+  classification.move_boundary = opt.moving_vertices == Moving_vertices::ALL;
+  classification.preserve_features = opt.preserve_features;
+  classification.tensor_voting = opt.tensor_voting;
+  return classification;
 }
 
-/// The pipeline of the paper's Fig. 1 on the triangulation behind `labels`
-/// (Mesh_labels.h): the vertices are classified once (`classify(view, options)`
-/// gives a `Vertex_classification` by view id), then each iteration runs a
-/// smoothing sweep (unless `moving_vertices` is NONE), a topology pass (if
-/// `topology_optimization`), max-min steps and an insertion pass. The flat view the
-/// sweeps use is re-read after a pass that changed cells. Every decision compares
-/// the cells concerned, worst first, by the phase's measure, within the extreme
-/// angles the phase started from, so the mesh never ends worse than it started.
-/// A phase stops after `max_iteration_number` iterations (0:
-/// `unlimited_iteration_cap`), at the time limit, at convergence (no vertex moved
-/// by more than `convergence` of its local size and no flip; with no iteration
-/// limit and no convergence given, `unlimited_convergence`), or when an iteration
-/// changed nothing. The main phase decides by `quality_measure`; with
-/// `largest_angle_phase`, a phase by the largest dihedral angle and a last one by
-/// `quality_measure` follow, without insertion; the last one takes max-min steps
-/// at every cell below the flip threshold.
-template <class Labels, class Classify, class Visitor>
-Smoothing_result optimize_mesh(Labels& labels, const Classify& classify, const Smoothing_options& opt,
-                               Visitor&& visitor)
+/// A phase of the pipeline: iterations run with its own options (its measure
+/// and thresholds), numbered as `Iteration_stats::phase`.
+struct Phase
 {
-  CGAL::Real_timer timer;
-  timer.start();
+  std::size_t number;
+  Smoothing_options options;
+};
 
-  Flat_view<Labels> view(labels, opt.threads);
-  auto& mesh = view.mesh();
+/// The phases of a run with options `opt`: the main phase, decided by
+/// `quality_measure`; then, with `largest_angle_phase` (not for NODT, the paper's
+/// baseline, whose projection would then aim at the boundary the phase starts
+/// from rather than the input's), a phase decided by the largest dihedral angle
+/// and a last one by `quality_measure` again, both without insertion. The
+/// minimum sine treats an angle and its supplement alike, so it leaves the
+/// angles between its worst and the largest one alone: the second phase lowers
+/// them, the last uses what that freed.
+inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
+{
+  std::vector<Phase> phases{{0, opt}};
+  if(!opt.largest_angle_phase || opt.smoothing_method == Smoothing_method::NODT) return phases;
 
-  Vertex_classification cls = classify(view, classification_options(opt));
-  if(opt.moving_vertices == Moving_vertices::NONE) std::fill(cls.kind.begin(), cls.kind.end(), Vertex_kind::fixed);
+  Smoothing_options lower = opt;
+  lower.quality_measure = Quality_measure::largest_dihedral_angle;
+  lower.vertex_insertion = false;
+  // Max-min steps where an angle is above the threshold; flips also where one is
+  // below its supplement (the flip pass selects by sine), since a flat cell often
+  // goes only with its neighbours.
+  lower.max_min_threshold = largest_angle_quality(opt.largest_angle_threshold);
+  lower.flips.quality_threshold = dihedral_sine(opt.largest_angle_threshold);
+  phases.push_back({1, lower});
 
-  Smoothing_result result;
-  // Adds the time since the last call to `phase`.
-  double lap = 0;
-  auto charge = [&](double& phase) {
-    const double now = timer.time();
-    phase += now - lap;
-    lap = now;
-  };
-  result.interior_vertices = cls.count(Vertex_kind::interior);
-  result.surface_vertices = cls.count(Vertex_kind::surface);
-  result.feature_vertices = cls.count(Vertex_kind::feature);
-  result.fixed_vertices = cls.count(Vertex_kind::fixed);
-  result.non_manifold_vertices = cls.non_manifold;
-  result.used_tensor_voting = cls.used_tensor_voting;
-  visitor.after_classification(result);
+  Smoothing_options last = opt;
+  last.vertex_insertion = false;
+  // Max-min steps at every cell the flip pass works on, not only the worst ones:
+  // the phase before pressed many cells down to the smallest angle it started from.
+  if(last.max_min_threshold > 0 && last.quality_measure == Quality_measure::min_dihedral_sine)
+    last.max_min_threshold = std::max(last.max_min_threshold, last.flips.quality_threshold);
+  phases.push_back({2, last});
+  return phases;
+}
 
-  // Whole-mesh scans run in blocks of cells, merged in block order: the same
-  // result on any number of threads.
-  Thread_workers<char> workers(opt.threads);
-  auto cell_blocks = [&mesh] { return block_count(mesh.cells.size()); };
-  auto for_cell_blocks = [&](const auto& f) {
-    workers.for_blocks(mesh.cells.size(), [&](char&, int b, std::size_t begin, std::size_t end) {
-      for(std::size_t c = begin; c < end; ++c)
-        if(mesh.in_mesh[c]) f(b, c);
-    });
-  };
-  // The extreme angles of the mesh now: no phase ends with a smaller smallest or a
-  // larger largest angle than it started with.
-  auto extreme_angles = [&]() {
-    std::vector<Dihedral_bounds> block_bounds(cell_blocks(), Dihedral_bounds::empty());
-    for_cell_blocks([&](int b, std::size_t c) {
-      const auto& q = mesh.cells[c];
-      block_bounds[b].include(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]);
+/// The pipeline of the paper's Fig. 1 on the triangulation behind `Adapter`
+/// (Triangulation_adapter.h). The vertices are classified once; then each phase
+/// (`pipeline_phases`) runs iterations of
+///
+///   sweep -> flips -> max-min steps -> insertion,
+///
+/// re-reading the flat view the sweeps work on after a step that changed cells.
+/// Every decision compares the cells concerned, worst first, by the phase's
+/// measure, within the extreme angles the phase started from, so the mesh never
+/// ends worse than it started. A phase stops after `max_iteration_number`
+/// iterations (0: `unlimited_iteration_cap`), at the time limit, at convergence
+/// (no vertex moved by more than `convergence` of its local size and no flip;
+/// with no iteration limit and no convergence given, `unlimited_convergence`), or
+/// when an iteration changed nothing.
+///
+/// What the steps share: the flat view and the classification of its vertices,
+/// the extreme angles of the phase, one volume budget for the run, and when each
+/// vertex last moved or got a new star, which tells the flip and insertion
+/// passes which of their earlier failures are worth trying again.
+template <class Adapter, class Visitor>
+class Mesh_optimizer
+{
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
+  using View = Flat_view<Adapter>;
+  using Candidate = Candidate_cell<Cell_handle, Vertex_handle>;
+
+public:
+  /// `classify(view, options)` gives the `Vertex_classification` of the view's vertices.
+  template <class Classify>
+  Mesh_optimizer(Adapter& adapter, const Classify& classify, const Smoothing_options& options, Visitor& visitor)
+    : adapter_(adapter), options_(options), phase_options_(options), visitor_(visitor), timer_(started_timer()),
+      view_(adapter, options.threads), mesh_(view_.mesh()), workers_(options.threads)
+  {
+    classification_ = classify(view_, classification_options(options));
+    if(options.moving_vertices == Moving_vertices::NONE)
+      std::fill(classification_.kind.begin(), classification_.kind.end(), Vertex_kind::fixed);
+    report_classification();
+
+    // Every step that may change a subdomain's volume is paid from one budget for
+    // the run (Volume_budget.h); NODT, which does not keep the volume, has none.
+    if(options.smoothing_method != Smoothing_method::NODT) volume_budget_ = Volume_budget::of(mesh_, options.threads);
+    flip_history_.retries_after_moves = options.flips.retries_after_moves;
+    changed_at_.assign(mesh_.number_of_vertices(), 0);
+    new_star_at_.assign(mesh_.number_of_vertices(), 0);
+    insertion_budget_ = options.max_vertex_insertions >= 0
+                            ? static_cast<std::size_t>(options.max_vertex_insertions)
+                            : static_cast<std::size_t>(std::floor(0.05 * double(mesh_.number_of_vertices())));
+    if(!options.vertex_insertion || options.moving_vertices == Moving_vertices::NONE) insertion_budget_ = 0;
+  }
+
+  /// Runs the phases; the result's code is the main phase's, or the time limit's.
+  Smoothing_result run()
+  {
+    for(const Phase& phase : pipeline_phases(options_))
+    {
+      if(out_of_time_) break;
+      start_phase(phase.options);
+      const Mesh_optimization_return_code code = run_phase(phase.number);
+      if(phase.number == 0) result_.code = code;
+    }
+    if(out_of_time_) result_.code = TIME_LIMIT_REACHED;
+    result_.moved_vertices = static_cast<std::size_t>(std::count(moved_.begin(), moved_.end(), 1));
+    result_.seconds = timer_.time();
+    return result_;
+  }
+
+private:
+  // A phase's extreme angles, within which it works, and its sweep. The cells
+  // that failed to flip by the last phase's measure may flip by this one's.
+  void start_phase(const Smoothing_options& options)
+  {
+    sweep_.reset();
+    phase_options_ = options;
+    bounds_ = extreme_angles();
+    flip_history_.failed.clear();
+    sweep_.emplace(mesh_, classification_, phase_options_, bounds_, &volume_budget_);
+    charge(result_.phases.setup);
+  }
+
+  // At most the phase's iterations, until one changes nothing or converges.
+  Mesh_optimization_return_code run_phase(std::size_t phase)
+  {
+    const Smoothing_options& opt = phase_options_;
+    const std::size_t last = opt.max_iteration_number == 0 ? unlimited_iteration_cap : opt.max_iteration_number;
+    Mesh_optimization_return_code code = MAX_ITERATION_NUMBER_REACHED;
+    for(std::size_t k = 1; k <= last; ++k)
+    {
+      Iteration_stats stats;
+      stats.iteration = ++iteration_;
+      stats.phase = phase;
+      const bool moves = opt.moving_vertices != Moving_vertices::NONE;
+      if(moves) sweep(stats);
+      if(opt.topology_optimization) flips(stats);
+      if(moves && opt.max_min_threshold > 0) max_min_steps(stats);   // after the flips, which remove most flat cells
+      if(insertion_budget_ > 0 && opt.vertex_insertion) insertion(stats);
+      report_iteration(stats);
+      if(const std::optional<Mesh_optimization_return_code> stop = stop_reason(stats))
+      {
+        code = *stop;
+        break;
+      }
+    }
+    moved_.resize(mesh_.number_of_vertices(), 0);
+    for(std::size_t v = 0; v < moved_.size(); ++v) moved_[v] |= sweep_->has_moved(static_cast<int>(v));
+    return code;
+  }
+
+  // The steps of an iteration.
+
+  void sweep(Iteration_stats& stats)
+  {
+    const double start = timer_.time();
+    sweep_->forget_moves();
+    sweep_->run(stats);
+    view_.write_back();
+    stamp_moves();
+    stats.sweep_seconds = timer_.time() - start;
+    charge(result_.phases.sweeps);
+  }
+
+  void flips(Iteration_stats& stats)
+  {
+    const Smoothing_options& opt = phase_options_;
+    const double start = timer_.time();   // the pass's cost includes finding where to start
+    flip_history_.pass = iteration_;
+    stamp_regions(flip_history_);
+    touched_.clear();
+    added_.clear();
+    // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
+    const bool known = guard_knows() && !opt.flips.flip_outside;
+    if(known) collect_below(opt.flips.quality_threshold, measured_, [this](std::size_t c) { return measure(c); });
+    stats.topology = flip_pass(adapter_, opt.flips, bounds_, vertex_id(), touched_, &flip_history_,
+                               opt.quality_measure, known ? &measured_ : nullptr);
+    stats.topology.seconds = timer_.time() - start;
+    charge(result_.phases.flips);
+    if(stats.topology.total() > 0) reread(stats);
+  }
+
+  void max_min_steps(Iteration_stats& stats)
+  {
+    const double start = timer_.time();
+    sweep_->forget_moves();
+    sweep_->raise_worst(phase_options_.max_min_threshold, stats);
+    view_.write_back();
+    stamp_moves();
+    stats.max_min_seconds = timer_.time() - start;
+    charge(result_.phases.max_min);
+  }
+
+  void insertion(Iteration_stats& stats)
+  {
+    const Smoothing_options& opt = phase_options_;
+    const double start = timer_.time();
+    touched_.clear();
+    added_.clear();
+    insertion_history_.pass = iteration_;
+    insertion_history_.clock = flip_history_.clock;
+    stamp_regions(insertion_history_);
+    if(guard_knows())
+      collect_below(opt.insertion.quality_threshold, insertion_candidates_,
+                    [this](std::size_t c) { return view_.cells()[c]; });
+    stats.insertion = insertion_pass(adapter_, opt.insertion, bounds_, opt.quality_measure, opt.tensor_voting,
+                                     insertion_budget_, opt.moving_vertices == Moving_vertices::ALL,
+                                     [this](Vertex_handle v) { return motion_of(v); }, vertex_id(), added_, touched_,
+                                     &insertion_history_, guard_knows() ? &insertion_candidates_ : nullptr,
+                                     &volume_budget_);
+    stats.insertion.seconds = timer_.time() - start;
+    insertion_budget_ -= stats.insertion.vertices_added;
+    flip_history_.clock = insertion_history_.clock;
+    charge(result_.phases.insertion);
+    if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread(stats);
+  }
+
+  // After the triangulation changed: re-read it, classify the new vertices, and
+  // mark the stars that changed.
+  void reread(Iteration_stats& stats)
+  {
+    const double start = timer_.time();
+    view_.refresh();
+    view_.read_points();
+    classification_.kind.resize(mesh_.number_of_vertices(), Vertex_kind::fixed);
+    classification_.curve_neighbors.resize(mesh_.number_of_vertices(), {-1, -1});
+    for(const auto& a : added_) classify_added(a);
+    std::vector<int> changed;
+    for(Vertex_handle v : touched_)
+      if(!adapter_.triangulation().is_infinite(v)) changed.push_back(view_.index(v));
+    const std::size_t now = flip_history_.clock;
+    changed_at_.resize(mesh_.number_of_vertices(), now);
+    new_star_at_.resize(mesh_.number_of_vertices(), now);
+    for(int v : changed) changed_at_[v] = new_star_at_[v] = now;
+    sweep_->refresh(changed);
+    stats.reread_seconds += timer_.time() - start;
+    charge(result_.phases.reread);
+  }
+
+  // How the phase ends, if it does after this iteration.
+  std::optional<Mesh_optimization_return_code> stop_reason(const Iteration_stats& stats)
+  {
+    const bool changed_cells = stats.topology.total() > 0 || stats.insertion.vertices_added > 0;
+    const bool unlimited = options_.max_iteration_number == 0;
+    const double convergence =
+        unlimited && options_.convergence == 0 ? unlimited_convergence : options_.convergence;
+    if(stats.moved == 0 && !changed_cells) return CANT_IMPROVE_ANYMORE;
+    if(convergence > 0 && stats.max_relative_move < convergence && !changed_cells) return CONVERGENCE_REACHED;
+    if(options_.time_limit > 0 && timer_.time() >= options_.time_limit)
+    {
+      out_of_time_ = true;
+      return TIME_LIMIT_REACHED;
+    }
+    return std::nullopt;
+  }
+
+  // What the steps share.
+
+  // The extreme angles of the mesh now: no phase ends with a smaller smallest or
+  // a larger largest angle than it started with. Whole-mesh scans run in blocks
+  // of cells, merged in block order: the same result on any number of threads.
+  Dihedral_bounds extreme_angles()
+  {
+    std::vector<Dihedral_bounds> block_bounds(block_count(mesh_.cells.size()), Dihedral_bounds::empty());
+    for_mesh_cells([&](int b, std::size_t c) {
+      const auto& q = mesh_.cells[c];
+      block_bounds[b].include(mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]);
     });
     Dihedral_bounds all = Dihedral_bounds::empty();
     for(const Dihedral_bounds& b : block_bounds) all.include(b);
     return all;
-  };
-  Dihedral_bounds bounds = extreme_angles();
+  }
 
-  // Every step that may change a subdomain's volume is paid from one budget for
-  // the run (Volume_budget.h); NODT, which does not keep the volume, has none.
-  Volume_budget volume_budget =
-      opt.smoothing_method == Smoothing_method::NODT ? Volume_budget() : Volume_budget::of(mesh, opt.threads);
-  // Each phase has its options (its measure) and its sweep.
-  Smoothing_options popt = opt;
-  std::optional<Smoothing_sweep<typename Flat_view<Labels>::Kernel>> sweep;
-  sweep.emplace(mesh, cls, popt, bounds, &volume_budget);
-  auto vertex_id = [&view](typename Labels::Vertex_handle v) { return view.index(v); };
-  std::vector<typename Labels::Vertex_handle> touched;
-  std::vector<int> changed;
-  Attempt_history history;
-  history.retries_after_moves = opt.flips.retries_after_moves;
-  std::vector<typename Labels::Cell_handle> candidates;
-  std::vector<std::size_t> changed_at(mesh.number_of_vertices(), 0);   // per vertex: when it last moved or flipped
-  std::vector<std::size_t> new_star_at(mesh.number_of_vertices(), 0);  // per vertex: when its star last changed
+  template <class F>
+  void for_mesh_cells(const F& f)
+  {
+    workers_.for_blocks(mesh_.cells.size(), [&](char&, int b, std::size_t begin, std::size_t end) {
+      for(std::size_t c = begin; c < end; ++c)
+        if(mesh_.in_mesh[c]) f(b, c);
+    });
+  }
 
-  // Insertion: its budget, and how existing vertices move, by their view id.
-  using Vertex_handle = typename Labels::Vertex_handle;
-  std::size_t budget = opt.max_vertex_insertions >= 0
-                           ? static_cast<std::size_t>(opt.max_vertex_insertions)
-                           : static_cast<std::size_t>(std::floor(0.05 * double(mesh.number_of_vertices())));
-  if(!opt.vertex_insertion || opt.moving_vertices == Moving_vertices::NONE) budget = 0;
-  Attempt_history insertion_history;
-  std::vector<Added_vertex<Vertex_handle>> added;
-  auto motion = [&](Vertex_handle v) {
-    const int id = view.index(v);
-    Vertex_motion<Vertex_handle> m;
-    m.kind = cls.kind[id];
-    if(cls.curve_neighbors[id][0] >= 0)
-    {
-      m.a = view.vertices()[cls.curve_neighbors[id][0]];
-      m.b = view.vertices()[cls.curve_neighbors[id][1]];
-    }
-    return m;
-  };
-  // The last change within one edge of each vertex, for a pass's history.
-  auto stamp_regions = [&](Attempt_history& h) {
-    h.region_stamp.resize(mesh.number_of_vertices());
-    h.topology_stamp.resize(mesh.number_of_vertices());
-    workers.for_each(0, static_cast<int>(mesh.number_of_vertices()), [&](char&, int v) {
-      std::size_t stamp = changed_at[v], star = new_star_at[v];
-      for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
-        for(int u : mesh.incidences[k].face)
-        {
-          stamp = std::max(stamp, changed_at[u]);
-          star = std::max(star, new_star_at[u]);
-        }
-      h.region_stamp[v] = stamp;
-      h.topology_stamp[v] = star;
-    }, 4096);
-  };
-  // After the triangulation changed: re-read it, classify new vertices, mark stars changed.
-  auto reread = [&]() {
-    view.refresh();
-    view.read_points();
-    cls.kind.resize(mesh.number_of_vertices(), Vertex_kind::fixed);
-    cls.curve_neighbors.resize(mesh.number_of_vertices(), {-1, -1});
-    for(const auto& a : added)
-    {
-      const int id = view.index(a.vertex);
-      cls.kind[id] = a.kind;
-      if(a.a == Vertex_handle()) continue;
-      // A split curve edge a b: the new vertex sits between them on the curve.
-      const int ia = view.index(a.a), ib = view.index(a.b);
-      cls.curve_neighbors[id] = {ia, ib};
-      for(auto [end, other] : {std::pair<int, int>{ia, ib}, std::pair<int, int>{ib, ia}})
-        for(int& n : cls.curve_neighbors[end])
-          if(n == other) n = id;
-    }
-    changed.clear();
-    for(auto v : touched)
-      if(!labels.triangulation().is_infinite(v)) changed.push_back(view.index(v));
-    changed_at.resize(mesh.number_of_vertices(), history.clock);
-    new_star_at.resize(mesh.number_of_vertices(), history.clock);
-    for(int v : changed) changed_at[v] = new_star_at[v] = history.clock;
-    sweep->refresh(changed);
-    charge(result.phases.reread);
-  };
+  // With the guard on, the sweep knows every mesh cell's minimum dihedral sine,
+  // so the passes can start from the cells below their thresholds.
+  bool guard_knows() const
+  {
+    return phase_options_.quality_guard && phase_options_.quality_measure == Quality_measure::min_dihedral_sine;
+  }
 
-  // With the guard on, the sweep knows every mesh cell's minimum dihedral sine:
-  // the passes start from the cells below their thresholds.
-  auto guard_knows = [&popt] {
-    return popt.quality_guard && popt.quality_measure == Quality_measure::min_dihedral_sine;
-  };
-  // The mesh cells the guard measured below a threshold, as `make(c)` gives them,
-  // in cell order.
-  auto collect_below = [&](double threshold, auto& out, const auto& make) {
-    std::vector<std::decay_t<decltype(out)>> found(static_cast<std::size_t>(cell_blocks()));
-    for_cell_blocks([&](int b, std::size_t c) {
-      if(sweep->cell_quality(static_cast<int>(c)) < threshold) found[static_cast<std::size_t>(b)].push_back(make(c));
+  // The mesh cells the guard measured below `threshold`, as `make(c)` gives them, in cell order.
+  template <class T, class Make>
+  void collect_below(double threshold, std::vector<T>& out, const Make& make)
+  {
+    std::vector<std::vector<T>> found(block_count(mesh_.cells.size()));
+    for_mesh_cells([&](int b, std::size_t c) {
+      if(sweep_->cell_quality(static_cast<int>(c)) < threshold) found[static_cast<std::size_t>(b)].push_back(make(c));
     });
     out.clear();
     for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());
-  };
-  // For the flip pass, measured again from the flat points in each cell's vertex
-  // order, as the pass would measure them; for the insertion pass, the cells.
-  using Measured = Measured_cell<typename Labels::Cell_handle, Vertex_handle>;
-  std::vector<Measured> measured;
-  auto measure = [&](std::size_t c) {
-    const auto& q = mesh.cells[c];
-    Measured m{view.cells()[c], {}, q, 0.0};
-    for(int k = 0; k < 4; ++k) m.vertices[k] = view.vertices()[q[k]];
-    m.quality = tet_quality(popt.quality_measure, mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]],
-                            mesh.points[q[3]]);
-    return m;
-  };
-  auto cell = [&](std::size_t c) { return view.cells()[c]; };
-
-  const bool unlimited = opt.max_iteration_number == 0;
-  const double convergence = unlimited && opt.convergence == 0 ? unlimited_convergence : opt.convergence;
-  std::size_t it = 0;
-  bool out_of_time = false;
-  std::vector<char> moved;   // vertices moved in some phase
-  // One phase: at most `last` iterations with the options `popt`, until an
-  // iteration changes nothing or converges. Returns how it ended.
-  auto run_phase = [&](std::size_t phase) {
-    Mesh_optimization_return_code code = MAX_ITERATION_NUMBER_REACHED;
-    const std::size_t last = popt.max_iteration_number == 0 ? unlimited_iteration_cap : popt.max_iteration_number;
-    for(std::size_t k = 1; k <= last; ++k)
-    {
-      Iteration_stats stats;
-      stats.iteration = ++it;
-      stats.phase = phase;
-      if(popt.moving_vertices != Moving_vertices::NONE)
-      {
-        const double start = timer.time();
-        sweep->forget_moves();
-        sweep->run(stats);
-        view.write_back();
-        ++history.clock;
-        for(int v : sweep->moved()) changed_at[v] = history.clock;
-        stats.sweep_seconds = timer.time() - start;
-        charge(result.phases.sweeps);
-      }
-      if(popt.topology_optimization)
-      {
-        const double start = timer.time();   // the pass's cost includes finding where to start
-        history.pass = it;
-        stamp_regions(history);
-        touched.clear();
-        added.clear();
-        // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
-        const bool known = guard_knows() && !popt.flips.flip_outside;
-        if(known) collect_below(popt.flips.quality_threshold, measured, measure);
-        stats.topology = flip_pass(labels, popt.flips, bounds, vertex_id, touched, &history, popt.quality_measure,
-                                   known ? &measured : nullptr);
-        stats.topology.seconds = timer.time() - start;
-        charge(result.phases.flips);
-        if(stats.topology.total() > 0) reread();
-      }
-      if(popt.moving_vertices != Moving_vertices::NONE && popt.max_min_threshold > 0)
-      {
-        // After the flips, which remove most flat tetrahedra better than moves can.
-        sweep->forget_moves();
-        sweep->raise_worst(popt.max_min_threshold, stats);
-        view.write_back();
-        ++history.clock;
-        for(int v : sweep->moved()) changed_at[v] = history.clock;
-        charge(result.phases.max_min);
-      }
-      if(budget > 0 && popt.vertex_insertion)
-      {
-        const double start = timer.time();
-        touched.clear();
-        added.clear();
-        insertion_history.pass = it;
-        insertion_history.clock = history.clock;
-        stamp_regions(insertion_history);
-        if(guard_knows()) collect_below(popt.insertion.quality_threshold, candidates, cell);
-        stats.insertion = insertion_pass(labels, popt.insertion, bounds, popt.quality_measure, popt.tensor_voting,
-                                         budget, popt.moving_vertices == Moving_vertices::ALL, motion, vertex_id,
-                                         added, touched, &insertion_history, guard_knows() ? &candidates : nullptr,
-                                         &volume_budget);
-        stats.insertion.seconds = timer.time() - start;
-        budget -= stats.insertion.vertices_added;
-        history.clock = insertion_history.clock;
-        charge(result.phases.insertion);
-        if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread();
-      }
-      result.topology += stats.topology;
-      result.insertion += stats.insertion;
-      stats.seconds = timer.time();
-      result.iterations = it;
-      visitor.after_iteration(stats);
-      const bool flipped = stats.topology.total() > 0 || stats.insertion.vertices_added > 0;
-      if(stats.moved == 0 && !flipped) { code = CANT_IMPROVE_ANYMORE; break; }
-      if(convergence > 0 && stats.max_relative_move < convergence && !flipped)
-      {
-        code = CONVERGENCE_REACHED;
-        break;
-      }
-      if(opt.time_limit > 0 && timer.time() >= opt.time_limit)
-      {
-        out_of_time = true;
-        code = TIME_LIMIT_REACHED;
-        break;
-      }
-    }
-    moved.resize(mesh.number_of_vertices(), 0);
-    for(std::size_t v = 0; v < moved.size(); ++v) moved[v] |= sweep->has_moved(static_cast<int>(v));
-    return code;
-  };
-  // A new phase: its options, the extreme angles it starts from, its sweep; the
-  // cells that failed to flip by the last phase's measure may flip by this one's.
-  auto start_phase = [&](const Smoothing_options& next) {
-    sweep.reset();
-    popt = next;
-    bounds = extreme_angles();
-    history.failed.clear();
-    sweep.emplace(mesh, cls, popt, bounds, &volume_budget);
-    charge(result.phases.setup);
-  };
-
-  charge(result.phases.setup);
-  result.code = run_phase(0);
-  // Not for NODT, the paper's baseline: a new sweep would project onto the boundary
-  // the phase starts from, no longer the input's.
-  if(opt.largest_angle_phase && opt.smoothing_method != Smoothing_method::NODT && !out_of_time)
-  {
-    // The measure above treats an angle and its supplement alike, so angles
-    // between its worst and the largest one are left alone: lower them with the
-    // largest angle as the measure, then let the minimum sine use what that freed.
-    Smoothing_options lower = opt;
-    lower.quality_measure = Quality_measure::largest_dihedral_angle;
-    lower.vertex_insertion = false;
-    // Max-min steps where an angle is above the threshold; flips also where one is
-    // below its supplement (the flip pass selects by sine), since a flat cell often
-    // goes only with its neighbours.
-    lower.max_min_threshold = largest_angle_quality(opt.largest_angle_threshold);
-    lower.flips.quality_threshold = dihedral_sine(opt.largest_angle_threshold);
-    start_phase(lower);
-    run_phase(1);
-    if(!out_of_time)
-    {
-      Smoothing_options polish = opt;
-      polish.vertex_insertion = false;
-      // Max-min steps at every cell the flip pass works on (not only the worst ones):
-      // the phase before pressed many cells down to the smallest angle it started from.
-      if(polish.max_min_threshold > 0 && polish.quality_measure == Quality_measure::min_dihedral_sine)
-        polish.max_min_threshold = std::max(polish.max_min_threshold, polish.flips.quality_threshold);
-      start_phase(polish);
-      run_phase(2);
-    }
   }
-  if(out_of_time) result.code = TIME_LIMIT_REACHED;
-  result.moved_vertices = static_cast<std::size_t>(std::count(moved.begin(), moved.end(), 1));
-  result.seconds = timer.time();
-  return result;
+
+  // A cell for the flip pass, measured from the flat points in the cell's vertex
+  // order, as the pass would measure it, without reading the triangulation.
+  Candidate measure(std::size_t c) const
+  {
+    const auto& q = mesh_.cells[c];
+    Candidate m{0.0, sorted(q), view_.cells()[c], {}};
+    for(int k = 0; k < 4; ++k) m.vertices[k] = view_.vertices()[q[k]];
+    m.quality = tet_quality(phase_options_.quality_measure, mesh_.points[q[0]], mesh_.points[q[1]],
+                            mesh_.points[q[2]], mesh_.points[q[3]]);
+    return m;
+  }
+
+  auto vertex_id() const
+  {
+    return [this](Vertex_handle v) { return view_.index(v); };
+  }
+
+  // How an existing vertex moves, for the insertion pass.
+  Vertex_motion<Vertex_handle> motion_of(Vertex_handle v) const
+  {
+    const int id = view_.index(v);
+    Vertex_motion<Vertex_handle> m;
+    m.kind = classification_.kind[id];
+    if(classification_.curve_neighbors[id][0] >= 0)
+    {
+      m.a = view_.vertices()[classification_.curve_neighbors[id][0]];
+      m.b = view_.vertices()[classification_.curve_neighbors[id][1]];
+    }
+    return m;
+  }
+
+  // A vertex the insertion pass added; one on a split curve edge a b sits
+  // between them on the curve.
+  void classify_added(const Added_vertex<Vertex_handle>& a)
+  {
+    const int id = view_.index(a.vertex);
+    classification_.kind[id] = a.kind;
+    if(a.a == Vertex_handle()) return;
+    const int ia = view_.index(a.a), ib = view_.index(a.b);
+    classification_.curve_neighbors[id] = {ia, ib};
+    for(auto [end, other] : {std::pair<int, int>{ia, ib}, std::pair<int, int>{ib, ia}})
+      for(int& n : classification_.curve_neighbors[end])
+        if(n == other) n = id;
+  }
+
+  // The vertices the last sweep or max-min step moved changed now. The flip
+  // history's clock is the run's clock: the passes advance it at each change.
+  void stamp_moves()
+  {
+    ++flip_history_.clock;
+    for(int v : sweep_->moved()) changed_at_[v] = flip_history_.clock;
+  }
+
+  // The last change within one edge of each vertex, for a pass's history.
+  void stamp_regions(Attempt_history& history)
+  {
+    history.region_stamp.resize(mesh_.number_of_vertices());
+    history.topology_stamp.resize(mesh_.number_of_vertices());
+    workers_.for_each(0, static_cast<int>(mesh_.number_of_vertices()), [&](char&, int v) {
+      std::size_t stamp = changed_at_[v], star = new_star_at_[v];
+      for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
+        for(int u : mesh_.incidences[k].face)
+        {
+          stamp = std::max(stamp, changed_at_[u]);
+          star = std::max(star, new_star_at_[u]);
+        }
+      history.region_stamp[v] = stamp;
+      history.topology_stamp[v] = star;
+    }, 4096);
+  }
+
+  void report_classification()
+  {
+    result_.interior_vertices = classification_.count(Vertex_kind::interior);
+    result_.surface_vertices = classification_.count(Vertex_kind::surface);
+    result_.feature_vertices = classification_.count(Vertex_kind::feature);
+    result_.fixed_vertices = classification_.count(Vertex_kind::fixed);
+    result_.non_manifold_vertices = classification_.non_manifold;
+    result_.used_tensor_voting = classification_.used_tensor_voting;
+    visitor_.after_classification(result_);
+  }
+
+  void report_iteration(Iteration_stats& stats)
+  {
+    result_.topology += stats.topology;
+    result_.insertion += stats.insertion;
+    stats.seconds = timer_.time();
+    result_.iterations = iteration_;
+    visitor_.after_iteration(stats);
+  }
+
+  static CGAL::Real_timer started_timer()
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    return timer;
+  }
+
+  // Adds the time since the last call to `phase_seconds`.
+  void charge(double& phase_seconds)
+  {
+    const double now = timer_.time();
+    phase_seconds += now - lap_;
+    lap_ = now;
+  }
+
+  Adapter& adapter_;
+  const Smoothing_options& options_;
+  Smoothing_options phase_options_;
+  Visitor& visitor_;
+  CGAL::Real_timer timer_;
+  double lap_ = 0;
+  View view_;
+  typename View::Mesh& mesh_;
+  Thread_workers<char> workers_;
+  Vertex_classification classification_;
+  Dihedral_bounds bounds_;
+  Volume_budget volume_budget_;   // unlimited for NODT
+  std::optional<Smoothing_sweep<typename View::Kernel>> sweep_;
+  // Per vertex, on the flip history's clock: when it last moved or got a new
+  // star, and when its star last changed.
+  std::vector<std::size_t> changed_at_, new_star_at_;
+  Attempt_history flip_history_, insertion_history_;
+  std::vector<Candidate> measured_;                  // the flip pass's starting cells
+  std::vector<Cell_handle> insertion_candidates_;    // the insertion pass's
+  std::vector<Vertex_handle> touched_;               // vertices whose star the last pass changed
+  std::vector<Added_vertex<Vertex_handle>> added_;   // vertices the last insertion pass added
+  std::size_t insertion_budget_ = 0;
+  std::size_t iteration_ = 0;
+  bool out_of_time_ = false;
+  std::vector<char> moved_;   // vertices moved in some phase
+  Smoothing_result result_;
+};
+
+/// Runs the pipeline (`Mesh_optimizer`) on the triangulation behind `adapter`.
+template <class Adapter, class Classify, class Visitor>
+Smoothing_result optimize_mesh(Adapter& adapter, const Classify& classify, const Smoothing_options& options,
+                               Visitor&& visitor)
+{
+  return Mesh_optimizer<Adapter, std::remove_reference_t<Visitor>>(adapter, classify, options, visitor).run();
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

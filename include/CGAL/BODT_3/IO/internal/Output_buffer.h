@@ -143,7 +143,7 @@ void put_rows(Output_buffer& out, std::size_t n, int threads, const Row& row)
 {
   constexpr std::size_t rows_per_block = 1 << 13;
   const std::size_t blocks = (n + rows_per_block - 1) / rows_per_block;
-  Thread_workers<char> workers(threads);
+  BODT_3::internal::Thread_workers<char> workers(threads);
   const std::size_t window = 4 * static_cast<std::size_t>(workers.threads());
   std::vector<Text_block> text(window);
   for(std::size_t first = 0; first < blocks; first += window)

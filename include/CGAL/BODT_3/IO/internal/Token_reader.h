@@ -263,7 +263,7 @@ public:
     }
     const long first_line = line_ + 1;
     std::atomic<bool> refused{false};
-    Thread_workers<char>(threads).for_each(0, static_cast<int>(block_start.size()), [&](char&, int b) {
+    BODT_3::internal::Thread_workers<char>(threads).for_each(0, static_cast<int>(block_start.size()), [&](char&, int b) {
       std::size_t q = block_start[static_cast<std::size_t>(b)];
       const std::size_t end_row = std::min(n, (static_cast<std::size_t>(b) + 1) * rows_per_block);
       std::string_view fields[most_tokens];

@@ -72,7 +72,7 @@ struct Cells
   {
     if(t < 0) return -1;
     const auto& c = mesh.tets[static_cast<std::size_t>(t)];
-    return min_max_dihedral_angle(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]]).first;
+    return BODT_3::internal::min_max_dihedral_angle(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]]).first;
   }
 };
 

@@ -12,6 +12,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 enum class Voted_kind
 {
@@ -54,6 +55,7 @@ Tensor_vote<K> tensor_vote(const Vertex_star<K>& star, const Tensor_voting_optio
   return vote;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -16,6 +16,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// What a mesh file constrains beyond its labels, which the smoothing must keep:
 ///  - embedded surfaces: triangles listed with a label other than 0 between two
@@ -168,6 +169,7 @@ Tet_mesh_constraints find_constraints(const Tet_mesh& tm, const Flat_mesh<K>& fl
   return out;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -20,6 +20,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// How a vertex may move.
 enum class Vertex_kind : unsigned char
@@ -63,7 +64,6 @@ struct Vertex_classification
   std::size_t count(Vertex_kind k) const { return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), k)); }
 };
 
-namespace internal {
 
 // Whether oriented facets (x0, a, b) around x0 form exactly one closed cycle.
 inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
@@ -180,8 +180,6 @@ std::array<int, 2> voted_edge_neighbors(const Flat_mesh<K>& mesh, const std::vec
   if(best[0] < 0 || best[1] < 0) return {-1, -1};
   return best;
 }
-
-} // namespace internal
 
 /// Classifies every vertex of `mesh` (see `Vertex_kind`). A vertex is a corner, or on
 /// a feature curve, if any source says so. The rules, in order:
@@ -339,6 +337,7 @@ Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_
   return out;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -13,6 +13,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The shapes of bad tetrahedra (Cheng et al. 1999, the paper's Fig. 2). Six of
 /// them have short edges, which smoothing lengthens; spades, caps and slivers have
@@ -70,7 +71,6 @@ struct Bad_tet
   std::array<double, 3> bary = {0, 0, 0};
 };
 
-namespace internal {
 
 struct V3
 {
@@ -83,7 +83,6 @@ inline V3 cross(const V3& a, const V3& b)
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
-} // namespace internal
 
 /// Classifies a tetrahedron by its dihedral angles (bad or not) and, when bad, by
 /// its short edges and, without them, by where its vertices project:
@@ -257,6 +256,7 @@ Bad_tet classify_bad_tet(const Point& p0, const Point& p1, const Point& p2, cons
   return out;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

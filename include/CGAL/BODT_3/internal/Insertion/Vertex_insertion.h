@@ -17,34 +17,34 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// What a split did, so that `undo_split` can take it back: the cells it
 /// created (by their vertices, since a later split may replace their handles), the
 /// cells it replaced (vertices in positive order, regions), the facets of the
 /// complex inside them, and the new vertex (with the edge it split).
-template <class Labels>
+template <class Adapter>
 struct Split_record
 {
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
 
   std::vector<std::array<Vertex_handle, 4>> created;
   std::vector<New_cell<Vertex_handle>> old_cells;
-  std::vector<typename Labels::Region> old_regions;
-  std::vector<New_facet<Vertex_handle, typename Labels::Patch>> old_facets;
+  std::vector<typename Adapter::Region> old_regions;
+  std::vector<New_facet<Vertex_handle, typename Adapter::Patch>> old_facets;
   Vertex_handle vertex;
   Vertex_handle a, b;   // the split edge's ends; default for a split facet
   /// The boundary or interface facets split (in the complex, or between cells of
   /// different regions: the convex hull of a Triangulation_3), with their patches.
-  std::vector<typename Labels::Patch> boundary;
+  std::vector<typename Adapter::Patch> boundary;
 };
 
-namespace internal {
 
-template <class Labels>
-bool finite_cells_positive(const Labels& labels, const std::vector<New_cell<typename Labels::Vertex_handle>>& cells)
+template <class Adapter>
+bool finite_cells_positive(const Adapter& adapter, const std::vector<New_cell<typename Adapter::Vertex_handle>>& cells)
 {
-  const auto& tr = labels.triangulation();
+  const auto& tr = adapter.triangulation();
   for(const auto& c : cells)
   {
     bool finite = true;
@@ -57,19 +57,19 @@ bool finite_cells_positive(const Labels& labels, const std::vector<New_cell<type
 }
 
 // Records the replaced cells and the facets of the complex among them.
-template <class Labels>
-void record_old(Labels& labels, const std::vector<typename Labels::Cell_handle>& old, Split_record<Labels>& r)
+template <class Adapter>
+void record_old(Adapter& adapter, const std::vector<typename Adapter::Cell_handle>& old, Split_record<Adapter>& r)
 {
   for(std::size_t k = 0; k < old.size(); ++k)
   {
     const auto& c = old[k];
     r.old_cells.push_back({{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}, static_cast<int>(k)});
-    r.old_regions.push_back(labels.region(c));
+    r.old_regions.push_back(adapter.region(c));
     for(int i = 0; i < 4; ++i)
     {
       const auto n = c->neighbor(i);
       if(std::find(old.begin(), old.end(), n) == old.end() || n < c) continue;   // each inner facet once
-      const auto p = labels.patch(c, i);
+      const auto p = adapter.patch(c, i);
       if(!p.in_complex) continue;
       const auto& f = internal::kFacet[i];
       r.old_facets.push_back({{c->vertex(f[0]), c->vertex(f[1]), c->vertex(f[2])}, p});
@@ -79,12 +79,12 @@ void record_old(Labels& labels, const std::vector<typename Labels::Cell_handle>&
 
 // Whether the hull around new vertex `e` is locally convex, where the hull must
 // stay convex: a split point off its edge or facet by round-off can dent it.
-template <class Labels>
-bool hull_stays_convex(const Labels& labels, typename Labels::Vertex_handle e)
+template <class Adapter>
+bool hull_stays_convex(const Adapter& adapter, typename Adapter::Vertex_handle e)
 {
-  if(!labels.convex_hull()) return true;
-  const auto& tr = labels.triangulation();
-  std::vector<typename Labels::Cell_handle> cells;
+  if(!adapter.convex_hull()) return true;
+  const auto& tr = adapter.triangulation();
+  std::vector<typename Adapter::Cell_handle> cells;
   tr.tds().incident_cells(e, std::back_inserter(cells));
   for(const auto& c : cells)
   {
@@ -106,10 +106,58 @@ bool hull_stays_convex(const Labels& labels, typename Labels::Vertex_handle e)
   return true;
 }
 
-} // namespace internal
 
-template <class Labels>
-void undo_split(Labels& labels, const Split_record<Labels>& r);
+template <class Adapter>
+void undo_split(Adapter& adapter, const Split_record<Adapter>& r);
+
+// The cells around new vertex `e`: each old cell once per end of the split
+// simplex, with that end replaced by e; they keep the old cell's region.
+template <class Vertex_handle, class Cell_handle, class Ends>
+std::vector<New_cell<Vertex_handle>> cells_around_new_vertex(const std::vector<Cell_handle>& old, Vertex_handle e,
+                                                             const Ends& ends)
+{
+  std::vector<New_cell<Vertex_handle>> cells;
+  for(std::size_t k = 0; k < old.size(); ++k)
+    for(const Vertex_handle replaced : ends)
+    {
+      std::array<Vertex_handle, 4> q = {old[k]->vertex(0), old[k]->vertex(1), old[k]->vertex(2), old[k]->vertex(3)};
+      *std::find(q.begin(), q.end(), replaced) = e;
+      cells.push_back({q, static_cast<int>(k)});
+    }
+  return cells;
+}
+
+// Replaces `old` by the cells around new vertex `e`, recording it in `r`; if a new
+// finite cell would not be positively oriented, nothing changes, `e` goes, and false.
+template <class Adapter>
+bool replace_by_split(Adapter& adapter, const std::vector<typename Adapter::Cell_handle>& old,
+                      const std::vector<New_cell<typename Adapter::Vertex_handle>>& cells,
+                      const std::vector<New_facet<typename Adapter::Vertex_handle, typename Adapter::Patch>>& facets,
+                      typename Adapter::Vertex_handle e, Split_record<Adapter>& r)
+{
+  record_old(adapter, old, r);
+  if(!finite_cells_positive(adapter, cells) || !replace_cells(adapter, old, cells, facets))
+  {
+    adapter.tds().delete_vertex(e);
+    return false;
+  }
+  for(const auto& nc : cells) r.created.push_back(nc.vertices);
+  r.vertex = e;
+  return true;
+}
+
+// The last check of a split: the convex hull, where it must stay convex.
+template <class Adapter>
+bool keep_split(Adapter& adapter, Split_record<Adapter>& r, Split_record<Adapter>& record)
+{
+  if(!hull_stays_convex(adapter, r.vertex))
+  {
+    undo_split(adapter, r);
+    return false;
+  }
+  record = std::move(r);
+  return true;
+}
 
 /// Splits edge (c, i, j) at `p` (a point of the edge, up to rounding): every cell
 /// around the edge, in the mesh or not, becomes two that keep its region; the
@@ -118,13 +166,13 @@ void undo_split(Labels& labels, const Split_record<Labels>& r);
 /// (curve, patch, or subdomain). Refused (nothing changes, false) when a new finite
 /// cell would not be positively oriented, or a convex hull that must stay convex
 /// would not.
-template <class Labels>
-bool split_edge(Labels& labels, typename Labels::Cell_handle c, int i, int j,
-                const Bare_point_t<typename Labels::Triangulation>& p, Split_record<Labels>& record)
+template <class Adapter>
+bool split_edge(Adapter& adapter, typename Adapter::Cell_handle c, int i, int j,
+                const Bare_point_t<typename Adapter::Triangulation>& p, Split_record<Adapter>& record)
 {
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
-  const auto& tr = labels.triangulation();
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
+  const auto& tr = adapter.triangulation();
   const Vertex_handle u = c->vertex(i), v = c->vertex(j);
   if(tr.is_infinite(u) || tr.is_infinite(v)) return false;
 
@@ -134,19 +182,19 @@ bool split_edge(Labels& labels, typename Labels::Cell_handle c, int i, int j,
   while(++circ != done);
 
   // The facets of the complex around the edge, and where the new vertex lies.
-  typename Labels::Patch patch;
-  std::vector<std::pair<Vertex_handle, typename Labels::Patch>> around;   // (far vertex of (u, v, x), patch)
-  typename Labels::Region region = labels.region(c);
+  typename Adapter::Patch patch;
+  std::vector<std::pair<Vertex_handle, typename Adapter::Patch>> around;   // (far vertex of (u, v, x), patch)
+  typename Adapter::Region region = adapter.region(c);
   for(const Cell_handle& x : old)
   {
-    if(labels.region(x).kind == Region_kind::mesh) region = labels.region(x);
+    if(adapter.region(x).kind == Region_kind::mesh) region = adapter.region(x);
     for(int k = 0; k < 4; ++k)
     {
       const Vertex_handle w = x->vertex(k);
       if(w == u || w == v) continue;
       // The facet (u, v, other) of x, opposite w, if it is a boundary or interface.
-      const auto fp = labels.patch(x, k);
-      if(!fp.in_complex && labels.region(x) == labels.region(x->neighbor(k))) continue;
+      const auto fp = adapter.patch(x, k);
+      if(!fp.in_complex && adapter.region(x) == adapter.region(x->neighbor(k))) continue;
       Vertex_handle other;
       for(int l = 0; l < 4; ++l)
         if(l != k && x->vertex(l) != u && x->vertex(l) != v) other = x->vertex(l);
@@ -157,116 +205,74 @@ bool split_edge(Labels& labels, typename Labels::Cell_handle c, int i, int j,
     }
   }
 
-  const Vertex_handle e = labels.create_vertex(p, u, v, patch, region);
-  std::vector<New_cell<Vertex_handle>> cells;
-  for(std::size_t k = 0; k < old.size(); ++k)
-    for(const Vertex_handle replaced : {u, v})
-    {
-      std::array<Vertex_handle, 4> q = {old[k]->vertex(0), old[k]->vertex(1), old[k]->vertex(2), old[k]->vertex(3)};
-      *std::find(q.begin(), q.end(), replaced) = e;
-      cells.push_back({q, static_cast<int>(k)});
-    }
-  std::vector<New_facet<Vertex_handle, typename Labels::Patch>> facets;
+  const Vertex_handle e = adapter.create_vertex(p, u, v, patch, region);
+  const std::array<Vertex_handle, 2> ends = {u, v};
+  std::vector<New_facet<Vertex_handle, typename Adapter::Patch>> facets;
   for(const auto& a : around)
     if(a.second.in_complex)
     {
       facets.push_back({{u, e, a.first}, a.second});
       facets.push_back({{e, v, a.first}, a.second});
     }
-
-  Split_record<Labels> r;
-  internal::record_old(labels, old, r);
-  if(!internal::finite_cells_positive(labels, cells) || !replace_cells(labels, old, cells, facets))
-  {
-    labels.tds().delete_vertex(e);
-    return false;
-  }
-  for(const auto& nc : cells) r.created.push_back(nc.vertices);
-  labels.split_curve(u, v, e);
-  r.vertex = e;
+  Split_record<Adapter> r;
+  if(!replace_by_split(adapter, old, cells_around_new_vertex(old, e, ends), facets, e, r)) return false;
+  adapter.split_curve(u, v, e);
   r.a = u;
   r.b = v;
   for(const auto& a : around) r.boundary.push_back(a.second);
-  if(!internal::hull_stays_convex(labels, e))
-  {
-    undo_split(labels, r);
-    return false;
-  }
-  record = std::move(r);
-  return true;
+  return keep_split(adapter, r, record);
 }
 
 /// Splits facet (c, i) at `p` (a point inside it, up to rounding): each of its two
 /// cells becomes three that keep its region, and a facet of the complex becomes
 /// three with its patch. Refused (false) when a new finite cell would not be
 /// positively oriented, or a convex hull that must stay convex would not.
-template <class Labels>
-bool split_facet(Labels& labels, typename Labels::Cell_handle c, int i,
-                 const Bare_point_t<typename Labels::Triangulation>& p, Split_record<Labels>& record)
+template <class Adapter>
+bool split_facet(Adapter& adapter, typename Adapter::Cell_handle c, int i,
+                 const Bare_point_t<typename Adapter::Triangulation>& p, Split_record<Adapter>& record)
 {
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
   const Cell_handle n = c->neighbor(i);
   const std::vector<Cell_handle> old = {c, n};
-  const auto patch = labels.patch(c, i);
-  const auto region = labels.region(c).kind == Region_kind::mesh ? labels.region(c) : labels.region(n);
+  const auto patch = adapter.patch(c, i);
+  const auto region = adapter.region(c).kind == Region_kind::mesh ? adapter.region(c) : adapter.region(n);
   std::array<Vertex_handle, 3> f;
   for(int k = 0, m = 0; k < 4; ++k)
     if(k != i) f[m++] = c->vertex(k);
 
-  const Vertex_handle e = labels.create_vertex(p, Vertex_handle(), Vertex_handle(), patch, region);
-  std::vector<New_cell<Vertex_handle>> cells;
-  for(std::size_t k = 0; k < 2; ++k)
-    for(const Vertex_handle replaced : f)
-    {
-      std::array<Vertex_handle, 4> q = {old[k]->vertex(0), old[k]->vertex(1), old[k]->vertex(2), old[k]->vertex(3)};
-      *std::find(q.begin(), q.end(), replaced) = e;
-      cells.push_back({q, static_cast<int>(k)});
-    }
-  std::vector<New_facet<Vertex_handle, typename Labels::Patch>> facets;
+  const Vertex_handle e = adapter.create_vertex(p, Vertex_handle(), Vertex_handle(), patch, region);
+  std::vector<New_facet<Vertex_handle, typename Adapter::Patch>> facets;
   if(patch.in_complex)
     for(int k = 0; k < 3; ++k) facets.push_back({{f[k], f[(k + 1) % 3], e}, patch});
-
-  Split_record<Labels> r;
-  internal::record_old(labels, old, r);
-  if(!internal::finite_cells_positive(labels, cells) || !replace_cells(labels, old, cells, facets))
-  {
-    labels.tds().delete_vertex(e);
-    return false;
-  }
-  for(const auto& nc : cells) r.created.push_back(nc.vertices);
-  r.vertex = e;
-  if(patch.in_complex || labels.region(c) != labels.region(n)) r.boundary.push_back(patch);
-  if(!internal::hull_stays_convex(labels, e))
-  {
-    undo_split(labels, r);
-    return false;
-  }
-  record = std::move(r);
-  return true;
+  Split_record<Adapter> r;
+  if(!replace_by_split(adapter, old, cells_around_new_vertex(old, e, f), facets, e, r)) return false;
+  if(patch.in_complex || adapter.region(c) != adapter.region(n)) r.boundary.push_back(patch);
+  return keep_split(adapter, r, record);
 }
 
 /// Takes a split back: the cells it created (which must all still be there; the
 /// caller first puts back the positions it changed since) become the cells it
 /// replaced, with their regions and facets, a split curve edge is whole again, and
 /// the new vertex goes.
-template <class Labels>
-void undo_split(Labels& labels, const Split_record<Labels>& r)
+template <class Adapter>
+void undo_split(Adapter& adapter, const Split_record<Adapter>& r)
 {
-  std::vector<typename Labels::Cell_handle> created;
+  std::vector<typename Adapter::Cell_handle> created;
   for(const auto& q : r.created)
   {
-    typename Labels::Cell_handle c;
+    typename Adapter::Cell_handle c;
     int i0, i1, i2, i3;
-    if(!labels.tds().is_cell(q[0], q[1], q[2], q[3], c, i0, i1, i2, i3))
+    if(!adapter.tds().is_cell(q[0], q[1], q[2], q[3], c, i0, i1, i2, i3))
       throw std::logic_error("undo_split: a cell of the split is gone");
     created.push_back(c);
   }
-  if(r.a != typename Labels::Vertex_handle()) labels.join_curve(r.a, r.vertex, r.b);
-  if(!replace_cells(labels, created, r.old_cells, r.old_facets, nullptr, &r.old_regions, {r.vertex}))
+  if(r.a != typename Adapter::Vertex_handle()) adapter.join_curve(r.a, r.vertex, r.b);
+  if(!replace_cells(adapter, created, r.old_cells, r.old_facets, nullptr, &r.old_regions, {r.vertex}))
     throw std::logic_error("undo_split: the split cannot be taken back");
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -14,14 +14,13 @@
 
 namespace CGAL {
 namespace BODT_3 {
-
 namespace internal {
+
 
 // For a positively oriented cell (p0, p1, p2, p3), facet_opposite[j] lists the facet
 // opposite p_j so that orientation(p_j, a, b, c) is positive.
 constexpr int facet_opposite[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
-} // namespace internal
 
 /// The mesh as the smoother works on it: points and finite cells in flat arrays,
 /// with the incidences each vertex needs precomputed once, since smoothing moves
@@ -153,6 +152,7 @@ private:
   void find_neighbors() { set_neighbors(Tet_face_matching(cells, points.size())); }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

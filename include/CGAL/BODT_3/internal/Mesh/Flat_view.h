@@ -20,20 +20,21 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The flat view (`Flat_mesh`) of a 3D triangulation (`Triangulation_3`,
 /// `Delaunay_triangulation_3`, `Regular_triangulation_3`, or the triangulation of
 /// a C3T3) that the smoothing sweeps work on, with stable vertex ids (the order of
-/// the finite vertices, vertices added later appended). `Labels` (Mesh_labels.h)
+/// the finite vertices, vertices added later appended). `Adapter` (Triangulation_adapter.h)
 /// says which cells are the mesh and their subdomains. The view never changes the
 /// connectivity: flips and insertion change the triangulation, and `refresh`
 /// re-reads its cells. Positions go back with `Vertex::set_point`, keeping the
 /// weight of weighted points.
-template <class Labels>
+template <class Adapter>
 class Flat_view
 {
 public:
-  using Tr = typename Labels::Triangulation;
+  using Tr = typename Adapter::Triangulation;
   using Vertex_handle = typename Tr::Vertex_handle;
   using Cell_handle = typename Tr::Cell_handle;
   using Bare_point = Bare_point_t<Tr>;
@@ -41,9 +42,9 @@ public:
   using Mesh = Flat_mesh<Kernel>;
 
   /// `threads`: as `Smoothing_options::threads`; the view does not depend on it.
-  explicit Flat_view(Labels& labels, int threads = 1) : labels_(labels), workers_(threads)
+  explicit Flat_view(Adapter& adapter, int threads = 1) : adapter_(adapter), workers_(threads)
   {
-    if(labels.triangulation().dimension() != 3)
+    if(adapter.triangulation().dimension() != 3)
       throw std::invalid_argument("B-ODT smoothing needs a triangulation of dimension 3");
     mesh_.threads = threads;
     refresh();
@@ -51,7 +52,7 @@ public:
 
   Mesh& mesh() { return mesh_; }
   const Mesh& mesh() const { return mesh_; }
-  const Labels& labels() const { return labels_; }
+  const Adapter& adapter() const { return adapter_; }
   const std::vector<Cell_handle>& cells() const { return cells_; }
   const std::vector<Vertex_handle>& vertices() const { return handles_; }
   int index(Vertex_handle v) const
@@ -65,7 +66,7 @@ public:
   /// regions, the hull checks and the incidences.
   void refresh()
   {
-    Tr& tr = labels_.triangulation();
+    Tr& tr = adapter_.triangulation();
     auto cp = tr.geom_traits().construct_point_3_object();
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
       if(index_.insert(v, static_cast<int>(handles_.size())))
@@ -87,26 +88,26 @@ public:
     workers_.for_each(0, static_cast<int>(nc), [this](char&, int k) {
       const Cell_handle c = cells_[static_cast<std::size_t>(k)];
       mesh_.cells[k] = {index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))};
-      const auto r = labels_.region(c);
+      const auto r = adapter_.region(c);
       mesh_.in_mesh[k] = r.kind == Region_kind::mesh ? 1 : 0;
       mesh_.subdomain[k] = r.kind == Region_kind::mesh ? static_cast<int>(r.subdomain) : 0;
       for(int i = 0; i < 4; ++i) mesh_.neighbor[4 * static_cast<std::size_t>(k) + i] = cell_index_.find(c->neighbor(i));
     }, 1024);
     mesh_.hull_checks.clear();
-    if(labels_.convex_hull()) add_hull_checks();
+    if(adapter_.convex_hull()) add_hull_checks();
     mesh_.build_incidences();
   }
 
   /// Writes the positions of `mesh()` back into the triangulation.
   void write_back()
   {
-    for(std::size_t i = 0; i < handles_.size(); ++i) set_bare_point(labels_.triangulation(), handles_[i], mesh_.points[i]);
+    for(std::size_t i = 0; i < handles_.size(); ++i) set_bare_point(adapter_.triangulation(), handles_[i], mesh_.points[i]);
   }
 
   /// Re-reads the positions from the triangulation (after moves made on it directly).
   void read_points()
   {
-    for(std::size_t i = 0; i < handles_.size(); ++i) mesh_.points[i] = bare_point(labels_.triangulation(), handles_[i]);
+    for(std::size_t i = 0; i < handles_.size(); ++i) mesh_.points[i] = bare_point(adapter_.triangulation(), handles_[i]);
   }
 
 private:
@@ -115,7 +116,7 @@ private:
   // checks that do not hold now (a hull that is not convex there) are left out.
   void add_hull_checks()
   {
-    Tr& tr = labels_.triangulation();
+    Tr& tr = adapter_.triangulation();
     const Vertex_handle inf = tr.infinite_vertex();
     std::vector<Cell_handle> hull;
     tr.tds().incident_cells(inf, std::back_inserter(hull));
@@ -141,7 +142,7 @@ private:
     }
   }
 
-  Labels& labels_;
+  Adapter& adapter_;
   Thread_workers<char> workers_;
   Mesh mesh_;
   std::vector<Vertex_handle> handles_;
@@ -175,12 +176,13 @@ Feature_hints c3t3_feature_hints(const C3T3& c3t3, const View& view)
     hints.facet_patches.push_back({t, id});
     // A facet between two cells of one region is an embedded surface, which no
     // volume or interface rule holds in place: its vertices stay where they are.
-    if(view.labels().region(f->first) == view.labels().region(f->first->neighbor(f->second)))
+    if(view.adapter().region(f->first) == view.adapter().region(f->first->neighbor(f->second)))
       hints.corners.insert(hints.corners.end(), t.begin(), t.end());
   }
   return hints;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

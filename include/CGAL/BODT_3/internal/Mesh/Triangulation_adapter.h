@@ -12,6 +12,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Where a cell of the triangulation belongs, for connectivity changes: a cell
 /// may only be replaced by cells of its own region.
@@ -62,8 +63,8 @@ public:
   using Tds = typename Triangulation::Triangulation_data_structure;
   using Vertex_handle = typename Triangulation::Vertex_handle;
   using Cell_handle = typename Triangulation::Cell_handle;
-  using Region = BODT_3::Region<typename C3T3::Subdomain_index>;
-  using Patch = BODT_3::Patch<typename C3T3::Surface_patch_index>;
+  using Region = internal::Region<typename C3T3::Subdomain_index>;
+  using Patch = internal::Patch<typename C3T3::Surface_patch_index>;
 
   /// `convex_hull`: whether the triangulation's infinite cells close a real convex
   /// hull that must stay convex (a C3T3 from Mesh_3), or only close the mesh
@@ -189,8 +190,8 @@ public:
   using Tds = typename Tr::Triangulation_data_structure;
   using Vertex_handle = typename Tr::Vertex_handle;
   using Cell_handle = typename Tr::Cell_handle;
-  using Region = BODT_3::Region<int>;
-  using Patch = BODT_3::Patch<int>;
+  using Region = internal::Region<int>;
+  using Patch = internal::Patch<int>;
 
   explicit Triangulation_3_adapter(Tr& tr) : tr_(tr) {}
 
@@ -229,6 +230,7 @@ private:
   Tr& tr_;
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -23,6 +23,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Where each entity of a `Tet_mesh` came from, so that checks can name the line.
 struct Tet_mesh_source
@@ -35,7 +36,6 @@ struct Tet_mesh_source
   long tet_line(std::size_t t) const { return t < tet_lines.size() ? tet_lines[t] : 0; }
 };
 
-namespace internal {
 
 inline std::string tet_to_string(const std::array<int, 4>& t)
 {
@@ -43,7 +43,6 @@ inline std::string tet_to_string(const std::array<int, 4>& t)
          std::to_string(t[2] + 1) + " " + std::to_string(t[3] + 1);
 }
 
-} // namespace internal
 
 /// Checks that a mesh just read is a valid tetrahedral mesh, makes its orientation
 /// positive, and records `src.file` as `mesh.source`. Throws `Mesh_io_error` naming
@@ -276,6 +275,7 @@ inline void check_and_orient(Tet_mesh& mesh, const Tet_mesh_source& src, std::os
   }
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

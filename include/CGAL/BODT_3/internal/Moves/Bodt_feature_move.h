@@ -10,6 +10,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Algorithm 3, the advanced B-ODT move of a vertex on a feature curve:
 /// x* = x0 + f d along the feature direction d, minimizing Error = A f^2 + B f,
@@ -35,6 +36,7 @@ struct Bodt_feature_move
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -10,6 +10,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Algorithm 2, the basic B-ODT move of a boundary vertex: x* = x0 + u s + v t on
 /// the tangent plane through x0 with normal `normal` (eq. B.1 keeps the volume),
@@ -54,6 +55,7 @@ struct Bodt_surface_move
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

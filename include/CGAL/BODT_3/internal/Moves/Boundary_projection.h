@@ -14,6 +14,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The closest point on a mesh's boundary and interface triangles as they were
 /// when the projection was made: where NODT puts a boundary vertex back (CGAL's
@@ -59,6 +60,7 @@ private:
   std::unique_ptr<Tree> tree_;
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

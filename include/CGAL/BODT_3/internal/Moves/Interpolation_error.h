@@ -7,6 +7,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The L1 error (eq. 5) between f(x) = |x - x0|^2 and its piecewise-linear
 /// interpolant over the star of x* = x0 + X, as a function of the move X:
@@ -96,6 +97,7 @@ private:
   double b_[3];
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

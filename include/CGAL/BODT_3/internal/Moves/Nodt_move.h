@@ -8,6 +8,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The Natural ODT move of a boundary vertex (Tournois et al. 2009), the
 /// baseline the paper compares B-ODT with: the minimizer of the interpolation
@@ -55,6 +56,7 @@ struct Nodt_move
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

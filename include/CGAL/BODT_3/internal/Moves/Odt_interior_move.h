@@ -8,6 +8,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Algorithm 1, the original ODT move of an inner vertex (eq. 3):
 ///
@@ -27,6 +28,7 @@ struct Odt_interior_move
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

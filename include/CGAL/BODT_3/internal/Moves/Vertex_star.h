@@ -9,6 +9,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The neighbourhood Omega_0 of a vertex x0, as a move sees it: the mesh
 /// tetrahedra incident to x0, each given by its face opposite x0, and the
@@ -75,6 +76,7 @@ struct Vertex_star
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -15,6 +15,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Chooses and applies the move of a vertex so that the volume of every
 /// subdomain around it is kept. Each subdomain j of the star has a (B.1) normal
@@ -157,6 +158,7 @@ private:
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -11,6 +11,9 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
+
+constexpr double pi = 3.14159265358979323846;
 
 /// The six dihedral angles of tetrahedron (p0, p1, p2, p3), in degrees, in the
 /// edge order (01, 02, 03, 12, 13, 23). Each is measured with `atan2`, which stays
@@ -49,7 +52,7 @@ std::array<double, 6> dihedral_angles(const Point& p0, const Point& p1, const Po
     const double cz = a[0] * b[1] - a[1] * b[0];
     const double sin_part = std::sqrt(cx * cx + cy * cy + cz * cz);
     const double cos_part = -(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
-    angles[e] = std::atan2(sin_part, cos_part) * (180.0 / 3.14159265358979323846);
+    angles[e] = std::atan2(sin_part, cos_part) * (180.0 / pi);
   }
   return angles;
 }
@@ -92,6 +95,7 @@ double radius_ratio(const Point& p0, const Point& p1, const Point& p2, const Poi
   return 3.0 * inradius / circumradius;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

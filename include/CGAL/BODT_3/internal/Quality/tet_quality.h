@@ -14,8 +14,8 @@
 
 namespace CGAL {
 namespace BODT_3 {
-
 namespace internal {
+
 
 // The even permutations of a tetrahedron's vertices, one per first vertex.
 constexpr int even_orders[4][4] = {{0, 1, 2, 3}, {1, 0, 3, 2}, {2, 3, 0, 1}, {3, 2, 1, 0}};
@@ -47,7 +47,6 @@ int best_base(const Point* const p[4])
   return best;
 }
 
-} // namespace internal
 
 /// The signed volume of the tetrahedron, computed from its best-conditioned vertex
 /// (`internal::best_base`), so that a tetrahedron with a far vertex keeps its
@@ -164,8 +163,8 @@ double tet_quality(Quality_measure measure, const Point& p0, const Point& p1, co
 /// The largest-angle measure of a tetrahedron whose largest dihedral angle is
 /// `degrees`, and the minimum sine of one with an angle of `degrees`: thresholds
 /// given as angles, in each measure's units.
-inline double largest_angle_quality(double degrees) { return 1 + std::cos(degrees * 3.14159265358979323846 / 180); }
-inline double dihedral_sine(double degrees) { return std::sin(degrees * 3.14159265358979323846 / 180); }
+inline double largest_angle_quality(double degrees) { return 1 + std::cos(degrees * pi / 180); }
+inline double dihedral_sine(double degrees) { return std::sin(degrees * pi / 180); }
 
 /// The extreme dihedral angles a mesh may reach, as cosines: every angle t must
 /// have cos t in [cos_largest, cos_smallest]. Set to a mesh's own extremes, they
@@ -254,6 +253,7 @@ inline int compare_worst_first(std::vector<double>& after, std::vector<double>& 
   return 0;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

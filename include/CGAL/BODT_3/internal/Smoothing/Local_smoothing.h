@@ -24,6 +24,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The B-ODT move of single vertices, made on the triangulation itself: what a
 /// split needs right away, before the flat view of the sweeps is re-read. The
@@ -34,20 +35,20 @@ namespace BODT_3 {
 /// now (as in the sweeps), and, with a `budget`, a move that may change a
 /// subdomain's volume is paid from it as in the sweeps (Move_guard); a refused
 /// move is tried at 1/2, 1/4, 1/8.
-template <class Labels>
+template <class Adapter>
 class Local_smoothing
 {
 public:
-  using Tr = typename Labels::Triangulation;
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
+  using Tr = typename Adapter::Triangulation;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
   using Point = Bare_point_t<Tr>;
   using K = typename CGAL::Kernel_traits<Point>::Kernel;
   using Vector = typename K::Vector_3;
 
-  Local_smoothing(Labels& labels, const Dihedral_bounds& bounds, Quality_measure measure,
+  Local_smoothing(Adapter& adapter, const Dihedral_bounds& bounds, Quality_measure measure,
                   const Tensor_voting_options& voting, Volume_budget* budget = nullptr)
-    : labels_(labels), bounds_(bounds), measure_(measure), voting_(voting),
+    : adapter_(adapter), bounds_(bounds), measure_(measure), voting_(voting),
       budget_(budget && budget->limited() ? budget : nullptr)
   {}
 
@@ -57,7 +58,7 @@ public:
   bool move(Vertex_handle v, Vertex_kind kind, Vertex_handle a = Vertex_handle(), Vertex_handle b = Vertex_handle())
   {
     if(kind == Vertex_kind::fixed) return false;
-    const Tr& tr = labels_.triangulation();
+    const Tr& tr = adapter_.triangulation();
     all_cells_.clear();
     tr.tds().incident_cells(v, std::back_inserter(all_cells_));
     cells_.clear();
@@ -65,7 +66,7 @@ public:
     for(const Cell_handle& c : all_cells_)
       if(tr.is_infinite(c))
       {
-        if(labels_.convex_hull()) add_hull_checks(c);
+        if(adapter_.convex_hull()) add_hull_checks(c);
       }
       else
         cells_.push_back(c);
@@ -78,7 +79,7 @@ public:
 
     double old_worst = 2;
     for(const Cell_handle& c : cells_)
-      if(labels_.region(c).kind == Region_kind::mesh) old_worst = std::min(old_worst, quality(c, v, star_.x0));
+      if(adapter_.region(c).kind == Region_kind::mesh) old_worst = std::min(old_worst, quality(c, v, star_.x0));
     double fraction = 1;
     for(int h = 0; h < 4; ++h, fraction *= 0.5)
     {
@@ -97,7 +98,7 @@ public:
 private:
   double quality(Cell_handle c, Vertex_handle v, const Point& p) const
   {
-    const Tr& tr = labels_.triangulation();
+    const Tr& tr = adapter_.triangulation();
     Point q[4];
     for(int k = 0; k < 4; ++k) q[k] = c->vertex(k) == v ? p : bare_point(tr, c->vertex(k));
     return tet_quality(measure_, q[0], q[1], q[2], q[3]);
@@ -108,7 +109,7 @@ private:
   // that do not hold now (a boundary that is no convex hull) are left out.
   void add_hull_checks(Cell_handle c)
   {
-    const Tr& tr = labels_.triangulation();
+    const Tr& tr = adapter_.triangulation();
     const int i = c->index(tr.infinite_vertex());
     const Cell_handle fc = c->neighbor(i);
     const auto& o = internal::facet_opposite[fc->index(c)];
@@ -127,7 +128,7 @@ private:
 
   bool accepts(Vertex_handle v, const Point& p, double old_worst)
   {
-    const Tr& tr = labels_.triangulation();
+    const Tr& tr = adapter_.triangulation();
     for(const auto& h : hull_)
     {
       Point q[4];
@@ -139,7 +140,7 @@ private:
       Point q[4];
       for(int k = 0; k < 4; ++k) q[k] = c->vertex(k) == v ? p : bare_point(tr, c->vertex(k));
       if(CGAL::orientation(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE) return false;
-      if(labels_.region(c).kind != Region_kind::mesh) continue;
+      if(adapter_.region(c).kind != Region_kind::mesh) continue;
       const double quality = tet_quality(measure_, q[0], q[1], q[2], q[3]);
       if(quality < old_worst ||
          !bounds_.contains(q[0], q[1], q[2], q[3], measure_ == Quality_measure::min_dihedral_sine ? quality : 0.0))
@@ -169,12 +170,12 @@ private:
   // The star as the moves see it (Vertex_star's conventions).
   void gather(Vertex_handle v)
   {
-    const Tr& tr = labels_.triangulation();
+    const Tr& tr = adapter_.triangulation();
     star_.clear();
     star_.x0 = bare_point(tr, v);
     for(const Cell_handle& c : cells_)
     {
-      const auto r = labels_.region(c);
+      const auto r = adapter_.region(c);
       if(r.kind != Region_kind::mesh) continue;
       const int i = c->index(v);
       const auto& o = internal::facet_opposite[i];
@@ -182,7 +183,7 @@ private:
                              bare_point(tr, c->vertex(o[2])), static_cast<int>(r.subdomain)});
       for(int j = 0; j < 4; ++j)
       {
-        if(j == i || labels_.region(c->neighbor(j)).kind == Region_kind::mesh) continue;
+        if(j == i || adapter_.region(c->neighbor(j)).kind == Region_kind::mesh) continue;
         // The facet opposite j, oriented with its normal out of the mesh, from v.
         const auto& f = internal::facet_opposite[j];
         for(int k = 0; k < 3; ++k)
@@ -192,7 +193,7 @@ private:
     }
   }
 
-  Labels& labels_;
+  Adapter& adapter_;
   Dihedral_bounds bounds_;
   Quality_measure measure_;
   Tensor_voting_options voting_;
@@ -204,6 +205,7 @@ private:
   double cost_ = 0;   // of the position judged last
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

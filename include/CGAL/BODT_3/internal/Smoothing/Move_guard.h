@@ -18,6 +18,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Decides whether a vertex may go to a new position, and applies accepted moves.
 ///
@@ -260,6 +261,7 @@ private:
   std::vector<char> keeps_volume_;   // per vertex
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -23,6 +23,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Smoothing sweeps over a `Flat_mesh`: every movable vertex, in
 /// `sweep_order`, gets its volume-preserving B-ODT move (`Volume_preserving_move`)
@@ -301,6 +302,7 @@ private:
   std::vector<int> moved_;
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

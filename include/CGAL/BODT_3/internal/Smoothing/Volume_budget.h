@@ -16,6 +16,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// How much of its volume a subdomain may gain or lose over a whole run, relative.
 /// Ten times below the promise of 1e-10, so that a volume measured in floating
@@ -166,6 +167,7 @@ private:
   bool limited_ = false;
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -10,6 +10,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The order in which a sweep visits the movable vertices: by colour, then by
 /// index, for a greedy colouring (in index order) in which no two vertices of a
@@ -62,6 +63,7 @@ Sweep_order sweep_order(const Flat_mesh<K>& mesh, const std::vector<char>& movab
   return order;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

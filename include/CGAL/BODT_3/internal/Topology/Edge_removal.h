@@ -15,8 +15,8 @@
 
 namespace CGAL {
 namespace BODT_3 {
-
 namespace internal {
+
 
 // The best triangulation of a polygon w_0 .. w_{n-1} (ring order around an edge
 // u v) for edge removal, by dynamic programming (Klincsek; Shewchuk, "Two discrete
@@ -79,7 +79,6 @@ private:
   std::vector<int> split_;
 };
 
-} // namespace internal
 
 /// Edge removal: the m cells around an edge u v are replaced by the 2 (m - 2)
 /// cells of the best triangulation of the ring of its m neighbours (m = 3 is the
@@ -96,11 +95,11 @@ private:
 ///    (v, r_p, r_q) replace (u, v, r_p) and (u, v, r_q) in the complex (a 2-2 flip
 ///    on the surface, or 4-4 with the cells beyond), and the surface does not move.
 ///    A side made of infinite cells (the edge on the convex hull) must be two cells.
-template <class Labels>
+template <class Adapter>
 struct Edge_removal
 {
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
 
   int max_ring = 10;   // larger rings are left alone: they rarely help and cost O(m^3)
 
@@ -118,12 +117,12 @@ public:
   /// With `at_least`, only a proposal whose worst cell is better than that counts
   /// (a caller comparing alternatives passes its best so far): the search skips
   /// what cannot beat it, and returns false when nothing does.
-  bool operator()(const Flip_context<Labels>& ctx, Cell_handle c, int i, int j, Flip<Labels>& out,
+  bool operator()(const Flip_context<Adapter>& ctx, Cell_handle c, int i, int j, Flip<Adapter>& out,
                   double at_least = -std::numeric_limits<double>::infinity()) const
   {
     out.clear();
     Vertex_handle u = c->vertex(i), v = c->vertex(j);
-    if(ctx.is_infinite(u) || ctx.is_infinite(v) || ctx.labels.is_curve_edge(u, v)) return false;
+    if(ctx.is_infinite(u) || ctx.is_infinite(v) || ctx.adapter.is_curve_edge(u, v)) return false;
 
     // Around the edge as the TDS's circulator turns: cell k's neighbour across the
     // facet opposite its vertex next_around_edge(u, v) is cell k + 1, so that
@@ -146,7 +145,7 @@ public:
     const int m = static_cast<int>(cells.size());
     if(m < 3) return false;
 
-    if(!Flip_context<Labels>::same_orientation(cells[0], u, v, ring[0], ring[1])) std::swap(u, v);
+    if(!Flip_context<Adapter>::same_orientation(cells[0], u, v, ring[0], ring[1])) std::swap(u, v);
 
     // Constrained facets (u, v, ring[k]) between cells k-1 and k.
     std::vector<int>& constrained = constrained_;
@@ -155,7 +154,7 @@ public:
     {
       const Cell_handle prev = cells[(k + m - 1) % m];
       const int f = cells[k]->index(ring[(k + 1) % m]);
-      if(ctx.labels.patch(cells[k], f).in_complex || ctx.labels.region(prev) != ctx.labels.region(cells[k]))
+      if(ctx.adapter.patch(cells[k], f).in_complex || ctx.adapter.region(prev) != ctx.adapter.region(cells[k]))
         constrained.push_back(k);
     }
 
@@ -169,7 +168,7 @@ public:
     Region_kind measured = Region_kind::mesh;
     if(constrained.empty())
     {
-      const auto r = ctx.labels.region(cells[0]);
+      const auto r = ctx.adapter.region(cells[0]);
       if(!ctx.flippable(r)) return false;
       measured = r.kind;
       sides[num_sides++] = {0, m - 1};
@@ -178,45 +177,45 @@ public:
     {
       const int p = constrained[0], q = constrained[1];
       const int fp = cells[p]->index(ring[(p + 1) % m]), fq = cells[q]->index(ring[(q + 1) % m]);
-      if(ctx.labels.patch(cells[p], fp) != ctx.labels.patch(cells[q], fq)) return false;
+      if(ctx.adapter.patch(cells[p], fp) != ctx.adapter.patch(cells[q], fq)) return false;
       if(ctx.is_infinite(ring[p]) || ctx.is_infinite(ring[q])) return false;
       if(CGAL::orientation(ctx.point(u), ctx.point(v), ctx.point(ring[p]), ctx.point(ring[q])) != CGAL::COPLANAR)
         return false;
       bool any_mesh = false;
       for(const Side s : {Side{p, q}, Side{q, p + m}})
       {
-        const auto r = ctx.labels.region(cells[s.first % m]);
+        const auto r = ctx.adapter.region(cells[s.first % m]);
         if(s.last - s.first < 2 || (r.kind == Region_kind::infinite && s.last - s.first != 2)) return false;
         any_mesh = any_mesh || r.kind == Region_kind::mesh;
         sides[num_sides++] = s;
       }
       if(!any_mesh) return false;
       out.boundary = true;
-      out.new_facets.push_back({{u, ring[p], ring[q]}, ctx.labels.patch(cells[p], fp)});
-      out.new_facets.push_back({{v, ring[p], ring[q]}, ctx.labels.patch(cells[p], fp)});
+      out.new_facets.push_back({{u, ring[p], ring[q]}, ctx.adapter.patch(cells[p], fp)});
+      out.new_facets.push_back({{v, ring[p], ring[q]}, ctx.adapter.patch(cells[p], fp)});
     }
     else
       return false;
 
-    out.old_worst = Flip_context<Labels>::unmeasured;
+    out.old_worst = Flip_context<Adapter>::unmeasured;
     for(const Cell_handle& x : cells)
-      if(ctx.labels.region(x).kind == measured) out.old_worst = std::min(out.old_worst, ctx.quality(x));
+      if(ctx.adapter.region(x).kind == measured) out.old_worst = std::min(out.old_worst, ctx.quality(x));
 
     const double floor = std::max(out.old_worst, at_least);
-    out.new_worst = Flip_context<Labels>::unmeasured;
+    out.new_worst = Flip_context<Adapter>::unmeasured;
     std::vector<std::array<int, 3>>& triangles = triangles_;
     for(int k = 0; k < num_sides; ++k)
     {
       const Side& s = sides[k];
       const int n = s.last - s.first + 1;
       const int region_of = s.first % m;
-      const Region_kind kind = ctx.labels.region(cells[region_of]).kind;
+      const Region_kind kind = ctx.adapter.region(cells[region_of]).kind;
       auto w = [&](int a) { return ring[(s.first + a) % m]; };
       // A triangle no better than the cells removed (or than `at_least`) cannot be
       // part of a proposal that counts.
       auto value = [&](int a, int b, int c) {
         const double top = ctx.value({w(a), w(b), w(c), v}, kind, measured, floor);
-        if(top == Flip_context<Labels>::invalid) return top;
+        if(top == Flip_context<Adapter>::invalid) return top;
         return std::min(top, ctx.value({w(c), w(b), w(a), u}, kind, measured, floor));
       };
       internal::Polygon_triangulation& best = polygon_;
@@ -236,6 +235,7 @@ public:
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

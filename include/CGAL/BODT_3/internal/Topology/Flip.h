@@ -17,6 +17,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 enum class Flip_kind : unsigned char
 {
@@ -29,17 +30,17 @@ enum class Flip_kind : unsigned char
 /// A proposed connectivity change, ready for `replace_cells`: the cells it
 /// removes, those it creates, the facets it adds to the complex, and the quality
 /// of the worst measured cell before and after.
-template <class Labels>
+template <class Adapter>
 struct Flip
 {
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
 
   Flip_kind kind = Flip_kind::flip_2_3;
   bool boundary = false;   // flips exactly coplanar boundary or interface facets
   std::vector<Cell_handle> old_cells;
   std::vector<New_cell<Vertex_handle>> new_cells;
-  std::vector<New_facet<Vertex_handle, typename Labels::Patch>> new_facets;
+  std::vector<New_facet<Vertex_handle, typename Adapter::Patch>> new_facets;
   double old_worst = 0;
   double new_worst = -1;
 
@@ -60,35 +61,35 @@ struct Flip
 /// only of cells outside the complex (allowed when `flip_outside` is on) is
 /// measured on those. Cells of the mesh must also stay within `bounds` (the
 /// input's extreme dihedral angles), so neither extreme angle ever gets worse.
-template <class Labels>
+template <class Adapter>
 class Flip_context
 {
 public:
-  using Triangulation = typename Labels::Triangulation;
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
-  using Region = typename Labels::Region;
+  using Triangulation = typename Adapter::Triangulation;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
+  using Region = typename Adapter::Region;
   using Bare_point = std::decay_t<decltype(std::declval<typename Triangulation::Geom_traits>().construct_point_3_object()(
       std::declval<typename Triangulation::Point>()))>;
 
   static constexpr double invalid = -1;
   static constexpr double unmeasured = std::numeric_limits<double>::infinity();
 
-  Flip_context(Labels& labels, const Dihedral_bounds& bounds, bool flip_outside,
+  Flip_context(Adapter& adapter, const Dihedral_bounds& bounds, bool flip_outside,
                Quality_measure measure = Quality_measure::min_dihedral_sine)
-    : labels(labels), bounds(bounds), flip_outside(flip_outside), measure(measure)
+    : adapter(adapter), bounds(bounds), flip_outside(flip_outside), measure(measure)
   {}
 
-  Labels& labels;
+  Adapter& adapter;
   Dihedral_bounds bounds;
   bool flip_outside;
   Quality_measure measure;
 
-  const Triangulation& triangulation() const { return labels.triangulation(); }
-  bool is_infinite(Vertex_handle v) const { return labels.triangulation().is_infinite(v); }
+  const Triangulation& triangulation() const { return adapter.triangulation(); }
+  bool is_infinite(Vertex_handle v) const { return adapter.triangulation().is_infinite(v); }
   Bare_point point(Vertex_handle v) const
   {
-    return labels.triangulation().geom_traits().construct_point_3_object()(v->point());
+    return adapter.triangulation().geom_traits().construct_point_3_object()(v->point());
   }
 
   /// Whether cells of region `r` may be replaced by a flip of that region alone.
@@ -139,6 +140,7 @@ public:
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

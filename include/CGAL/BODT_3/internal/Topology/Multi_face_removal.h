@@ -12,6 +12,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Multi-face removal, the inverse of edge removal (Shewchuk, "Two discrete
 /// optimization algorithms for the topological improvement of tetrahedral
@@ -24,11 +25,11 @@ namespace BODT_3 {
 ///
 /// Allowed inside one flippable region only: no face, edge or cell touched is in
 /// the complex as a boundary, interface or curve, and u w is not already an edge.
-template <class Labels>
+template <class Adapter>
 struct Multi_face_removal
 {
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
 
   int max_faces = 10;   // the sandwich is explored up to this many faces
 
@@ -48,15 +49,15 @@ private:
 public:
   /// Proposes a multi-face removal rooted at facet (c, i) in `out`; returns false
   /// if none is allowed or valid. `out.improves()` tells whether to apply it.
-  bool operator()(const Flip_context<Labels>& ctx, Cell_handle c, int i, Flip<Labels>& out) const
+  bool operator()(const Flip_context<Adapter>& ctx, Cell_handle c, int i, Flip<Adapter>& out) const
   {
     out.clear();
     const Cell_handle n = c->neighbor(i);
     const Vertex_handle w = c->vertex(i);
     const Vertex_handle u = n->vertex(n->index(c));
     if(ctx.is_infinite(u) || ctx.is_infinite(w)) return false;
-    const auto region = ctx.labels.region(c);
-    if(!ctx.flippable(region) || ctx.labels.region(n) != region || ctx.labels.patch(c, i).in_complex) return false;
+    const auto region = ctx.adapter.region(c);
+    if(!ctx.flippable(region) || ctx.adapter.region(n) != region || ctx.adapter.patch(c, i).in_complex) return false;
 
     // The sandwich, explored depth first from the root face.
     std::vector<Face>& faces = faces_;
@@ -65,7 +66,7 @@ public:
       std::array<Vertex_handle, 3> v;
       for(int k = 0, l = 0; k < 4; ++k)
         if(k != i) v[l++] = c->vertex(k);
-      if(!Flip_context<Labels>::same_orientation(c, v[0], v[1], v[2], w)) std::swap(v[1], v[2]);
+      if(!Flip_context<Adapter>::same_orientation(c, v[0], v[1], v[2], w)) std::swap(v[1], v[2]);
       faces.push_back({v, c, n, {-1, -1, -1}});
     }
     auto known = [&](Vertex_handle a, Vertex_handle b, Vertex_handle x) {
@@ -86,9 +87,9 @@ public:
         for(int l = 0; l < 4; ++l)
           if(N->vertex(l) != p && N->vertex(l) != q && N->vertex(l) != w) x = N->vertex(l);
         if(ctx.is_infinite(x) || !M->has_vertex(x) || N->neighbor(N->index(w)) != M) continue;
-        if(ctx.labels.region(N) != region || ctx.labels.region(M) != region) continue;
-        if(ctx.labels.patch(cw, cw->index(y)).in_complex || ctx.labels.patch(cu, cu->index(y)).in_complex ||
-           ctx.labels.patch(N, N->index(w)).in_complex || ctx.labels.is_curve_edge(p, q))
+        if(ctx.adapter.region(N) != region || ctx.adapter.region(M) != region) continue;
+        if(ctx.adapter.patch(cw, cw->index(y)).in_complex || ctx.adapter.patch(cu, cu->index(y)).in_complex ||
+           ctx.adapter.patch(N, N->index(w)).in_complex || ctx.adapter.is_curve_edge(p, q))
           continue;
         if(known(p, q, x)) continue;
         faces[f].child[k] = static_cast<int>(faces.size());
@@ -148,10 +149,11 @@ public:
     out.kind = chosen == 1 ? Flip_kind::flip_2_3 : Flip_kind::multi_face_removal;
     // An edge u w elsewhere would make the new cells overlap others: checked only
     // for a flip worth applying, since it costs most.
-    return !(out.improves() && ctx.labels.tds().is_edge(u, w));
+    return !(out.improves() && ctx.adapter.tds().is_edge(u, w));
   }
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

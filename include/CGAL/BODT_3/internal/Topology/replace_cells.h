@@ -11,6 +11,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// A cell to create: its vertices, in positive order, and which of the replaced
 /// cells gives it its region (subdomain).
@@ -29,7 +30,6 @@ struct New_facet
   Patch patch;
 };
 
-namespace internal {
 
 // For a cell (v0, v1, v2, v3), the facet opposite vertex i with the orientation the
 // cell induces on it (every such triple is an even permutation away from the others).
@@ -53,9 +53,8 @@ std::array<Vertex_handle, 3> sorted_key(std::array<Vertex_handle, 3> f)
   return f;
 }
 
-} // namespace internal
 
-/// Replaces `old_cells` of the triangulation behind `labels` by `new_cells`: the
+/// Replaces `old_cells` of the triangulation behind `adapter` by `new_cells`: the
 /// n-to-m step shared by every flip and split. The new cells must fill exactly the
 /// region of the old ones: every facet on the boundary of the old group must be a
 /// facet of exactly one new cell, with the same orientation, and every other facet
@@ -74,18 +73,18 @@ std::array<Vertex_handle, 3> sorted_key(std::array<Vertex_handle, 3> f)
 /// For undoing a split, `regions` (when given) replaces the old cells' regions as
 /// what `region_of` indexes, and the vertices in `removed` may (must) disappear:
 /// they are deleted from the triangulation.
-template <class Labels>
-bool replace_cells(Labels& labels, const std::vector<typename Labels::Cell_handle>& old_cells,
-                   const std::vector<New_cell<typename Labels::Vertex_handle>>& new_cells,
-                   const std::vector<New_facet<typename Labels::Vertex_handle, typename Labels::Patch>>& new_facets,
-                   std::vector<typename Labels::Cell_handle>* created = nullptr,
-                   const std::vector<typename Labels::Region>* regions = nullptr,
-                   const std::vector<typename Labels::Vertex_handle>& removed = {})
+template <class Adapter>
+bool replace_cells(Adapter& adapter, const std::vector<typename Adapter::Cell_handle>& old_cells,
+                   const std::vector<New_cell<typename Adapter::Vertex_handle>>& new_cells,
+                   const std::vector<New_facet<typename Adapter::Vertex_handle, typename Adapter::Patch>>& new_facets,
+                   std::vector<typename Adapter::Cell_handle>* created = nullptr,
+                   const std::vector<typename Adapter::Region>* regions = nullptr,
+                   const std::vector<typename Adapter::Vertex_handle>& removed = {})
 {
-  using Vertex_handle = typename Labels::Vertex_handle;
-  using Cell_handle = typename Labels::Cell_handle;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
   using Key = std::array<Vertex_handle, 3>;
-  auto& tds = labels.tds();
+  auto& tds = adapter.tds();
 
   auto is_old = [&](Cell_handle c) { return std::find(old_cells.begin(), old_cells.end(), c) != old_cells.end(); };
 
@@ -174,20 +173,20 @@ bool replace_cells(Labels& labels, const std::vector<typename Labels::Cell_handl
 
   // Checked: now change the triangulation. Facets of the complex on the group's
   // boundary and inside it leave the complex while both sides still exist.
-  std::vector<typename Labels::Patch> boundary_patch(boundary.size());
+  std::vector<typename Adapter::Patch> boundary_patch(boundary.size());
   for(std::size_t b = 0; b < boundary.size(); ++b)
   {
-    boundary_patch[b] = labels.patch(boundary[b].old_cell, boundary[b].old_index);
-    labels.remove_facet(boundary[b].old_cell, boundary[b].old_index);
+    boundary_patch[b] = adapter.patch(boundary[b].old_cell, boundary[b].old_index);
+    adapter.remove_facet(boundary[b].old_cell, boundary[b].old_index);
   }
-  std::vector<typename Labels::Region> old_regions;
+  std::vector<typename Adapter::Region> old_regions;
   for(Cell_handle c : old_cells)
   {
-    old_regions.push_back(labels.region(c));
+    old_regions.push_back(adapter.region(c));
     for(int i = 0; i < 4; ++i)
-      if(is_old(c->neighbor(i))) labels.remove_facet(c, i);
+      if(is_old(c->neighbor(i))) adapter.remove_facet(c, i);
   }
-  for(Cell_handle c : old_cells) labels.remove_cell(c);
+  for(Cell_handle c : old_cells) adapter.remove_cell(c);
 
   std::vector<Cell_handle> cells(nn);
   for(std::size_t k = 0; k < nn; ++k)
@@ -215,16 +214,17 @@ bool replace_cells(Labels& labels, const std::vector<typename Labels::Cell_handl
   for(Vertex_handle v : removed) tds.delete_vertex(v);
 
   const auto& region = regions ? *regions : old_regions;
-  for(std::size_t k = 0; k < nn; ++k) labels.add_cell(cells[k], region[new_cells[k].region_of]);
+  for(std::size_t k = 0; k < nn; ++k) adapter.add_cell(cells[k], region[new_cells[k].region_of]);
   for(std::size_t k = 0; k < nn; ++k)
     for(int i = 0; i < 4; ++i)
-      if(outer[k][i] >= 0) labels.add_facet(cells[k], i, boundary_patch[outer[k][i]]);
+      if(outer[k][i] >= 0) adapter.add_facet(cells[k], i, boundary_patch[outer[k][i]]);
   for(std::size_t f = 0; f < new_facets.size(); ++f)
-    labels.add_facet(cells[facet_of_new_facet[f] / 4], facet_of_new_facet[f] % 4, new_facets[f].patch);
+    adapter.add_facet(cells[facet_of_new_facet[f] / 4], facet_of_new_facet[f] % 4, new_facets[f].patch);
   if(created) created->insert(created->end(), cells.begin(), cells.end());
   return true;
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

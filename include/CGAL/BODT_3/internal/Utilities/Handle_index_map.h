@@ -12,6 +12,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Index of a triangulation's vertex or cell handle, by the address of what it
 /// points to: an open-addressing hash table (linear probing, no node per entry).
@@ -125,6 +126,7 @@ private:
   std::size_t size_ = 0;
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

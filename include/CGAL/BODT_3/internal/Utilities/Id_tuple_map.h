@@ -10,6 +10,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// A map from tuples of N vertex ids (edges, faces, cells) to values: open
 /// addressing with linear probing, entries stored inline. The flip pass looks
@@ -104,6 +105,7 @@ private:
   std::size_t size_ = 0;
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -14,6 +14,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The number of threads a run uses: `requested`, or with 0 every core the
 /// process may use (TBB's default concurrency, which respects CPU affinity).
@@ -83,6 +84,7 @@ private:
   tbb::enumerable_thread_specific<Worker> workers_;
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

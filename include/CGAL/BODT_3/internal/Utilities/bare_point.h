@@ -8,6 +8,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// The unweighted point type of a triangulation (its `Point` for a Delaunay
 /// triangulation, the point of its weighted points for a regular one).
@@ -35,6 +36,7 @@ void set_bare_point(const Tr& tr, typename Tr::Vertex_handle v, const Bare_point
     v->set_point(Point(p, v->point().weight()));
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -19,7 +19,6 @@ struct Has_facet_surface_centers<
     Cell, std::void_t<decltype(std::declval<Cell&>().set_facet_surface_center_index(0, std::declval<typename Cell::Index>()))>>
     : std::true_type {};
 
-} // namespace internal
 
 /// Mesh_3's cells keep, for each facet of the complex, the point where the facet's
 /// dual Voronoi edge meets the surface (its "surface center") and that point's
@@ -59,6 +58,7 @@ void set_facet_surface_centers(C3T3& c3t3)
   }
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -11,6 +11,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Groups values by an integer key in [0, `keys`), stably (a counting sort): the
 /// values of key k are `values[begin[k]]` to `values[begin[k + 1] - 1]`, in the
@@ -59,6 +60,7 @@ void group_by_key(std::size_t items, std::size_t keys, int threads, const Each& 
   });
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

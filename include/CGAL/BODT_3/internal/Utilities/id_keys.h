@@ -16,11 +16,15 @@ namespace internal {
 // Keys of edges, faces and cells by vertex ids, the same whatever order the
 // vertices come in.
 
-inline std::array<int, 3> sorted(std::array<int, 3> ids)
+template <std::size_t N>
+std::array<int, N> sorted(std::array<int, N> ids)
 {
   std::sort(ids.begin(), ids.end());
   return ids;
 }
+
+/// The same for a face written as a braced list.
+inline std::array<int, 3> sorted(const std::array<int, 3>& ids) { return sorted<3>(ids); }
 
 inline std::pair<int, int> edge_key(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
 

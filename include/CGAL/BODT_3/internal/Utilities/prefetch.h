@@ -8,6 +8,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Starts loading every cache line of the object `h` points to (a cell or a
 /// vertex of the triangulation), without waiting. Walking around an edge or a
@@ -26,6 +27,7 @@ inline void prefetch(Handle h)
 #endif
 }
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

@@ -13,6 +13,7 @@
 
 namespace CGAL {
 namespace BODT_3 {
+namespace internal {
 
 /// Which faces of a tetrahedral mesh are glued (the face of cell `c` opposite its
 /// vertex `i` has id `4 * c + i`), found without hashing: vertex by vertex, among
@@ -101,6 +102,7 @@ private:
   };
 };
 
+} // namespace internal
 } // namespace BODT_3
 } // namespace CGAL
 

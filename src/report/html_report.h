@@ -1,9 +1,11 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_BODT_3_IO_HTML_REPORT_H
-#define CGAL_BODT_3_IO_HTML_REPORT_H
+#ifndef BODT_REPORT_HTML_REPORT_H
+#define BODT_REPORT_HTML_REPORT_H
 
-#include <CGAL/BODT_3/IO/svg_histogram.h>
+#include "report/mesh_pictures.h"
+#include "report/svg_histogram.h"
+
 #include <CGAL/BODT_3/mesh_quality.h>
 
 #include <cstdio>
@@ -91,9 +93,10 @@ inline std::string report_figure(const Quality_report& before, const Quality_rep
 /// they are), the `run` summary items, the volume of every subdomain before and
 /// after, and the dihedral-angle histograms before (grey) and after (blue)
 /// overlaid on one log-scale axis with the tails below 10 and above 170 degrees
-/// shaded and counted. All text given is escaped.
+/// shaded and counted, then `pictures`, HTML put in as it is (the section of
+/// bodt_report::mesh_pictures_html; empty: none). All text given is escaped.
 inline std::string html_report(const std::string& title, const Quality_report& before, const Quality_report& after,
-                               const std::vector<Report_entry>& run)
+                               const std::vector<Report_entry>& run, const std::string& pictures = std::string())
 {
   using internal::report_count;
   using internal::report_format;
@@ -120,6 +123,19 @@ inline std::string html_report(const std::string& title, const Quality_report& b
        ".ylabel { writing-mode: vertical-rl; transform: rotate(180deg); font-size: 12px; }\n"
        "svg { display: block; max-width: 100%; height: auto; }\n"
        "figcaption { font-size: 14px; max-width: 900px; margin: 4px 0 0 18px; }\n"
+       ".pictures { display: grid; grid-template-columns: repeat(2, minmax(0, 1fr)); gap: 14px 20px; }\n"
+       ".pictures figcaption { margin: 4px 0 0; }\n"
+       "svg.mesh-picture { width: 100%; }\n"
+       ".mesh-picture .cells path { stroke: #000; stroke-opacity: .25; stroke-width: .4; stroke-linejoin: round; }\n"
+       ".mesh-picture.dense .cells path { stroke: none; }\n"
+       ".mesh-picture .cells path.fe { fill: none; stroke: " + std::string(bodt_report::feature_edge_colour) +
+       "; stroke-opacity: 1; stroke-width: 1.5; stroke-linecap: round; }\n"
+       ".mesh-picture .worst circle { fill: none; stroke: " + std::string(bodt_report::worst_ring_colour) +
+       "; stroke-width: 2.5; }\n"
+       ".mesh-picture .worst circle.halo { stroke: #fff; stroke-width: 5.5; }\n"
+       ".mesh-picture .worst text { font-size: 12px; font-weight: bold; fill: " +
+       std::string(bodt_report::worst_ring_colour) + "; stroke: #fff; stroke-width: 3px; paint-order: stroke; }\n"
+       "figure.legend { margin-top: 8px; }\n"
        "</style>\n</head>\n<body>\n";
   h += "<h1>" + html_escape(title) + "</h1>\n<p class=\"what\">B-ODT smoothing report (bodt smooth)</p>\n";
 
@@ -164,11 +180,11 @@ inline std::string html_report(const std::string& title, const Quality_report& b
   }
   h += "</tbody>\n</table>\n";
 
-  h += "<h2>Dihedral angles</h2>\n" + internal::report_figure(before, after) + "</body>\n</html>\n";
+  h += "<h2>Dihedral angles</h2>\n" + internal::report_figure(before, after) + pictures + "</body>\n</html>\n";
   return h;
 }
 
 } // namespace BODT_3
 } // namespace CGAL
 
-#endif // CGAL_BODT_3_IO_HTML_REPORT_H
+#endif // BODT_REPORT_HTML_REPORT_H

@@ -1,12 +1,16 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_BODT_3_IO_JSON_REPORT_H
-#define CGAL_BODT_3_IO_JSON_REPORT_H
+#ifndef BODT_REPORT_JSON_REPORT_H
+#define BODT_REPORT_JSON_REPORT_H
 
 // JSON for the quality and smoothing records, built with nlohmann::json (Debian's
 // nlohmann-json3-dev), which escapes every string and writes a value that is not
-// finite (NaN, infinity) as null: the output is always valid JSON. Only this header
-// needs the library; the rest of the package does not.
+// finite (NaN, infinity) as null: the output is always valid JSON. It belongs to the
+// tools (bodt, bodt-compare, the Python module), not to the header-only package; its
+// functions stay in namespace CGAL::BODT_3, where nlohmann finds them by
+// argument-dependent lookup on the package's types.
+
+#include "cli/feature_angles.h"
 
 #include <CGAL/BODT_3/Return_code.h>
 #include <CGAL/BODT_3/Smoothing_options.h>
@@ -68,6 +72,7 @@ inline void to_json(nlohmann::json& j, const Topology_stats& s)
 inline void to_json(nlohmann::json& j, const Insertion_stats& s)
 {
   j = nlohmann::json{{"spade_splits", s.spade_splits},
+                     {"wedge_splits", s.wedge_splits},
                      {"cap_splits", s.cap_splits},
                      {"sliver_splits", s.sliver_splits},
                      {"undone", s.undone},
@@ -93,6 +98,8 @@ inline void to_json(nlohmann::json& j, const Iteration_stats& s)
                      {"topology", s.topology},
                      {"insertion", s.insertion},
                      {"sweep_seconds", s.sweep_seconds},
+                     {"max_min_seconds", s.max_min_seconds},
+                     {"reread_seconds", s.reread_seconds},
                      {"seconds", s.seconds}};
 }
 
@@ -155,6 +162,8 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"tensor_voting",
                       {{"edge_ratio", o.tensor_voting.edge_ratio},
                        {"corner_ratio", o.tensor_voting.corner_ratio},
+                       {"feature_angle_deg", bodt_cli::angle_of_edge_ratio(o.tensor_voting.edge_ratio)},
+                       {"corner_angle_deg", bodt_cli::angle_of_corner_ratio(o.tensor_voting.corner_ratio)},
                        {"angle_weighted", o.tensor_voting.angle_weighted}}}};
 }
 
@@ -190,4 +199,4 @@ inline nlohmann::json smoothing_report(const Smoothing_options& options, const S
 } // namespace BODT_3
 } // namespace CGAL
 
-#endif // CGAL_BODT_3_IO_JSON_REPORT_H
+#endif // BODT_REPORT_JSON_REPORT_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_BODT_3_IO_SVG_HISTOGRAM_H
-#define CGAL_BODT_3_IO_SVG_HISTOGRAM_H
+#ifndef BODT_REPORT_SVG_HISTOGRAM_H
+#define BODT_REPORT_SVG_HISTOGRAM_H
 
 #include <CGAL/BODT_3/mesh_quality.h>
 
@@ -156,4 +156,4 @@ inline Histogram_series histogram_series(const std::string& label, const std::st
 } // namespace BODT_3
 } // namespace CGAL
 
-#endif // CGAL_BODT_3_IO_SVG_HISTOGRAM_H
+#endif // BODT_REPORT_SVG_HISTOGRAM_H
