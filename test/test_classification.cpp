@@ -183,7 +183,7 @@ BODT::internal::Vertex_kind kind_from_planes(int planes)
 
 // Checks that every feature vertex's curve neighbours, where given, lie on its line:
 // both share with it the grid coordinates on the planes it lies on.
-void expect_neighbours_on_the_line(const BODT::Tet_mesh& m, const BODT::Vertex_classification& c,
+void expect_neighbours_on_the_line(const BODT::Tet_mesh& m, const BODT::internal::Vertex_classification& c,
                                    const std::function<int(int)>& planes_of)
 {
   for(std::size_t v = 0; v < m.points.size(); ++v)
