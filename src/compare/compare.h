@@ -42,6 +42,7 @@ struct Surface_mesh
 {
   std::shared_ptr<Surface_domain> domain;
   Surface_c3t3 c3t3;
+  double h = 0;   // the length of every Mesh_3 size criterion (mesh_3.cpp)
 };
 
 /// Every kind of input: Mesh_3 outputs of an implicit domain and of a surface
@@ -76,6 +77,12 @@ const std::vector<Data_surface>& data_surfaces();
 /// surface in `off_path`, sized for about 40,000 tetrahedra (`Size::benchmark`) or
 /// 4,000 (`Size::small`). Throws std::runtime_error if the surface is not closed.
 Input surface_input(const std::string& off_path, bodt_inputs::Size size);
+/// The same for about `target_cells` tetrahedra (within 15% unless the surface's
+/// features need more). Beyond 40,000 the size is calibrated on a mesh of 40,000.
+Input surface_input(const std::string& off_path, double target_cells);
+/// The mesh `surface_input` made with the size `h` it found (`Surface_mesh::h`):
+/// Mesh_3 gives the same mesh for the same surface and size.
+Input surface_input_with_size(const std::string& off_path, double h);
 
 /// A mesh file (.mesh, .msh), named after its stem.
 Input file_input(const std::string& path);

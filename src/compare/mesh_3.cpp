@@ -87,6 +87,68 @@ double mean_edge_length(const C3T3& c3t3)
   return n ? sum / double(n) : 0.0;
 }
 
+// A closed surface as Mesh_3's domain, with its sharp edges detected, and the
+// diagonal of its bounding box.
+std::pair<std::shared_ptr<Surface_domain>, double> surface_domain(const std::string& off_path)
+{
+  std::ifstream in(off_path);
+  Polyhedron polyhedron;
+  if(!(in >> polyhedron)) throw std::runtime_error(off_path + ": cannot read an OFF surface");
+  if(!CGAL::is_closed(polyhedron)) throw std::runtime_error(off_path + ": the surface is not closed");
+  // Some of CGAL's data surfaces have quadrilateral and larger faces.
+  if(!CGAL::is_triangle_mesh(polyhedron)) CGAL::Polygon_mesh_processing::triangulate_faces(polyhedron);
+
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(polyhedron);
+  auto domain = std::make_shared<Surface_domain>(polyhedron);
+  domain->detect_features();   // CGAL's default: edges sharper than 60 degrees
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  return {domain, diagonal};
+}
+
+// The number of cells falls with h far slower than h^-3 while the surface and
+// its features dominate (coarse meshes, thin parts), so h is searched for: secant
+// steps on log(cells) against log(h), each step by a factor 0.4 to 2.5, until
+// the mesh is within 15% of the target. h stays below a tenth of the diagonal:
+// where the features alone need more cells than the target, the coarsest wins.
+// The search starts at `h`, which ends as the size of the mesh returned;
+// `previous_h` and `previous_cells` are a mesh made before (0: none), for the
+// first secant step.
+Surface_c3t3 search_size(const Surface_domain& domain, double target, double diagonal, double& h, double previous_h,
+                         double previous_cells)
+{
+  Surface_c3t3 c3t3;
+  for(int step = 0;; ++step)
+  {
+    c3t3 = Surface_c3t3();   // one mesh in memory at a time: they reach gigabytes
+    c3t3 = mesh_surface(domain, h);
+    const double cells = std::max(1., double(c3t3.number_of_cells_in_complex()));
+    if(std::abs(cells / target - 1.) < 0.15 || step == 8) break;
+    double slope = 3.;   // cells ~ h^-slope
+    if(previous_cells > 0.)
+      slope = std::clamp(std::log(cells / previous_cells) / std::log(previous_h / h), 0.5, 4.);
+    const double next = std::min(diagonal / 10., h * std::clamp(std::pow(cells / target, 1. / slope), 0.4, 2.5));
+    if(next == h) break;
+    previous_h = h;
+    previous_cells = cells;
+    h = next;
+  }
+  return c3t3;
+}
+
+Input surface_mesh_input(const std::string& off_path, std::shared_ptr<Surface_domain> domain, double diagonal, double h,
+                         Surface_c3t3 c3t3)
+{
+  const std::string file = file_name(off_path);
+  const std::string stem = file.substr(0, file.rfind('.'));
+  char origin[256];
+  std::snprintf(origin, sizeof origin,
+                "Mesh_3 of `%s` (Polyhedral_mesh_domain_with_features_3, detect_features), h = %.4g, i.e. "
+                "%.4g of the bounding box diagonal",
+                file.c_str(), h, h / diagonal);
+  return Input{stem, origin, Surface_mesh{std::move(domain), std::move(c3t3), h}};
+}
+
 } // namespace
 
 const std::vector<Data_surface>& data_surfaces()
@@ -101,50 +163,35 @@ const std::vector<Data_surface>& data_surfaces()
 
 Input surface_input(const std::string& off_path, bodt_inputs::Size size)
 {
-  std::ifstream in(off_path);
-  Polyhedron polyhedron;
-  if(!(in >> polyhedron)) throw std::runtime_error(off_path + ": cannot read an OFF surface");
-  if(!CGAL::is_closed(polyhedron)) throw std::runtime_error(off_path + ": the surface is not closed");
-  // Some of CGAL's data surfaces have quadrilateral and larger faces.
-  if(!CGAL::is_triangle_mesh(polyhedron)) CGAL::Polygon_mesh_processing::triangulate_faces(polyhedron);
+  return surface_input(off_path, size == bodt_inputs::Size::small ? 4000. : 40000.);
+}
 
-  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(polyhedron);
-  auto domain = std::make_shared<Surface_domain>(polyhedron);
-  domain->detect_features();   // CGAL's default: edges sharper than 60 degrees
-
-  // The number of cells falls with h far slower than h^-3 while the surface and
-  // its features dominate (coarse meshes, thin parts), so h is searched for: secant
-  // steps on log(cells) against log(h), each step by a factor 0.4 to 2.5, until
-  // the mesh is within 15% of the target. h stays below a tenth of the diagonal:
-  // where the features alone need more cells than the target, the coarsest wins.
-  const double target = size == bodt_inputs::Size::small ? 4000. : 40000.;
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
-  double h = diagonal / 15., previous_h = 0., previous_cells = 0.;
-  Surface_c3t3 c3t3;
-  for(int step = 0;; ++step)
+Input surface_input(const std::string& off_path, double target_cells)
+{
+  auto [domain, diagonal] = surface_domain(off_path);
+  // Searching from a coarse mesh would make several meshes near the target, each
+  // taking minutes at millions of cells. Beyond the benchmark's size, h is
+  // calibrated on a mesh of that size, then scaled by the cube root of the ratio
+  // of cells (at these sizes the volume's cells outnumber the surface's), and
+  // the search goes on from there.
+  const double calibration_cells = 40000.;
+  double h = diagonal / 15.;
+  Surface_c3t3 c3t3 = search_size(*domain, std::min(target_cells, calibration_cells), diagonal, h, 0., 0.);
+  const double cells = double(c3t3.number_of_cells_in_complex());
+  if(target_cells > calibration_cells && std::abs(cells / target_cells - 1.) >= 0.15)
   {
-    c3t3 = mesh_surface(*domain, h);
-    const double cells = std::max(1., double(c3t3.number_of_cells_in_complex()));
-    if(std::abs(cells / target - 1.) < 0.15 || step == 8) break;
-    double slope = 3.;   // cells ~ h^-slope
-    if(previous_cells > 0.)
-      slope = std::clamp(std::log(cells / previous_cells) / std::log(previous_h / h), 0.5, 4.);
-    const double next = std::min(diagonal / 10., h * std::clamp(std::pow(cells / target, 1. / slope), 0.4, 2.5));
-    if(next == h) break;
-    previous_h = h;
-    previous_cells = cells;
-    h = next;
+    const double calibration_h = h;
+    h = std::min(diagonal / 10., h * std::cbrt(cells / target_cells));
+    c3t3 = search_size(*domain, target_cells, diagonal, h, calibration_h, cells);
   }
+  return surface_mesh_input(off_path, domain, diagonal, h, std::move(c3t3));
+}
 
-  const std::string file = file_name(off_path);
-  const std::string stem = file.substr(0, file.rfind('.'));
-  char origin[256];
-  std::snprintf(origin, sizeof origin,
-                "Mesh_3 of `%s` (Polyhedral_mesh_domain_with_features_3, detect_features), h = %.4g, i.e. "
-                "%.4g of the bounding box diagonal",
-                file.c_str(), h, h / diagonal);
-  return Input{stem, origin, Surface_mesh{domain, std::move(c3t3)}};
+Input surface_input_with_size(const std::string& off_path, double h)
+{
+  auto [domain, diagonal] = surface_domain(off_path);
+  Surface_c3t3 c3t3 = mesh_surface(*domain, h);
+  return surface_mesh_input(off_path, domain, diagonal, h, std::move(c3t3));
 }
 
 Run cgal_odt(Mesh& mesh, std::size_t iterations)

@@ -21,6 +21,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <type_traits>
@@ -77,11 +78,10 @@ inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
   Smoothing_options lower = opt;
   lower.quality_measure = Quality_measure::largest_dihedral_angle;
   lower.vertex_insertion = false;
-  // Max-min steps where an angle is above the threshold; flips also where one is
-  // below its supplement (the flip pass selects by sine), since a flat cell often
-  // goes only with its neighbours.
+  // Flips and max-min steps where an angle is above the threshold: where the
+  // phase's measure says there is something to gain.
   lower.max_min_threshold = largest_angle_quality(opt.largest_angle_threshold);
-  lower.flips.quality_threshold = dihedral_sine(opt.largest_angle_threshold);
+  lower.flips.quality_threshold = largest_angle_quality(opt.largest_angle_threshold);
   phases.push_back({1, lower});
 
   Smoothing_options last = opt;
@@ -110,9 +110,12 @@ inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
 /// when an iteration changed nothing.
 ///
 /// What the steps share: the flat view and the classification of its vertices,
-/// the extreme angles of the phase, one volume budget for the run, and when each
-/// vertex last moved or got a new star, which tells the flip and insertion
-/// passes which of their earlier failures are worth trying again.
+/// the extreme angles of the phase, one volume budget for the run, and, on one
+/// clock, when each vertex last moved or got a new star, which tells the flip and
+/// insertion passes which of their earlier failures are worth trying again. The
+/// failures are kept per measure through the phases (a flip that failed by a
+/// phase's measure fails again in a later phase with the same measure, whose
+/// extreme angles are no wider, until something near it changes).
 template <class Adapter, class Visitor>
 class Mesh_optimizer
 {
@@ -136,7 +139,7 @@ public:
     // Every step that may change a subdomain's volume is paid from one budget for
     // the run (Volume_budget.h); NODT, which does not keep the volume, has none.
     if(options.smoothing_method != Smoothing_method::NODT) volume_budget_ = Volume_budget::of(mesh_, options.threads);
-    flip_history_.retries_after_moves = options.flips.retries_after_moves;
+    for(Attempt_history& h : flip_histories_) h.retries_after_moves = options.flips.retries_after_moves;
     changed_at_.assign(mesh_.number_of_vertices(), 0);
     new_star_at_.assign(mesh_.number_of_vertices(), 0);
     insertion_budget_ = options.max_vertex_insertions >= 0
@@ -169,7 +172,6 @@ private:
     sweep_.reset();
     phase_options_ = options;
     bounds_ = extreme_angles();
-    flip_history_.failed.clear();
     sweep_.emplace(mesh_, classification_, phase_options_, bounds_, &volume_budget_);
     charge(result_.phases.setup);
   }
@@ -219,15 +221,16 @@ private:
   {
     const Smoothing_options& opt = phase_options_;
     const double start = timer_.time();   // the pass's cost includes finding where to start
-    flip_history_.pass = iteration_;
-    stamp_regions(flip_history_);
+    Attempt_history& history = flip_history();
+    begin_pass(history);
     touched_.clear();
     added_.clear();
     // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
     const bool known = guard_knows() && !opt.flips.flip_outside;
     if(known) collect_below(opt.flips.quality_threshold, measured_, [this](std::size_t c) { return measure(c); });
-    stats.topology = flip_pass(adapter_, opt.flips, bounds_, vertex_id(), touched_, &flip_history_,
-                               opt.quality_measure, known ? &measured_ : nullptr);
+    stats.topology = flip_pass(adapter_, opt.flips, bounds_, vertex_id(), touched_, &history, opt.quality_measure,
+                               known ? &measured_ : nullptr, options_.threads);
+    clock_ = history.clock;
     stats.topology.seconds = timer_.time() - start;
     charge(result_.phases.flips);
     if(stats.topology.total() > 0) reread(stats);
@@ -250,20 +253,18 @@ private:
     const double start = timer_.time();
     touched_.clear();
     added_.clear();
-    insertion_history_.pass = iteration_;
-    insertion_history_.clock = flip_history_.clock;
-    stamp_regions(insertion_history_);
-    if(guard_knows())
+    begin_pass(insertion_history_);
+    if(guard_knows_sines())
       collect_below(opt.insertion.quality_threshold, insertion_candidates_,
                     [this](std::size_t c) { return view_.cells()[c]; });
     stats.insertion = insertion_pass(adapter_, opt.insertion, bounds_, opt.quality_measure, opt.tensor_voting,
                                      insertion_budget_, opt.moving_vertices == Moving_vertices::ALL,
                                      [this](Vertex_handle v) { return motion_of(v); }, vertex_id(), added_, touched_,
-                                     &insertion_history_, guard_knows() ? &insertion_candidates_ : nullptr,
+                                     &insertion_history_, guard_knows_sines() ? &insertion_candidates_ : nullptr,
                                      &volume_budget_);
     stats.insertion.seconds = timer_.time() - start;
     insertion_budget_ -= stats.insertion.vertices_added;
-    flip_history_.clock = insertion_history_.clock;
+    clock_ = insertion_history_.clock;
     charge(result_.phases.insertion);
     if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread(stats);
   }
@@ -281,7 +282,7 @@ private:
     std::vector<int> changed;
     for(Vertex_handle v : touched_)
       if(!adapter_.triangulation().is_infinite(v)) changed.push_back(view_.index(v));
-    const std::size_t now = flip_history_.clock;
+    const std::size_t now = clock_;
     changed_at_.resize(mesh_.number_of_vertices(), now);
     new_star_at_.resize(mesh_.number_of_vertices(), now);
     for(int v : changed) changed_at_[v] = new_star_at_[v] = now;
@@ -333,9 +334,18 @@ private:
     });
   }
 
-  // With the guard on, the sweep knows every mesh cell's minimum dihedral sine,
-  // so the passes can start from the cells below their thresholds.
+  // With the guard on, the sweep knows every mesh cell's quality by the phase's
+  // measure, so the flip pass can start from the cells below its threshold
+  // (`flip_selection_quality`) ...
   bool guard_knows() const
+  {
+    const Quality_measure m = phase_options_.quality_measure;
+    return phase_options_.quality_guard &&
+           (m == Quality_measure::min_dihedral_sine || m == Quality_measure::largest_dihedral_angle);
+  }
+
+  // ... and, with the minimum sine as the measure, the insertion pass too.
+  bool guard_knows_sines() const
   {
     return phase_options_.quality_guard && phase_options_.quality_measure == Quality_measure::min_dihedral_sine;
   }
@@ -397,12 +407,27 @@ private:
         if(n == other) n = id;
   }
 
-  // The vertices the last sweep or max-min step moved changed now. The flip
-  // history's clock is the run's clock: the passes advance it at each change.
+  // The vertices the last sweep or max-min step moved changed now.
   void stamp_moves()
   {
-    ++flip_history_.clock;
-    for(int v : sweep_->moved()) changed_at_[v] = flip_history_.clock;
+    ++clock_;
+    for(int v : sweep_->moved()) changed_at_[v] = clock_;
+  }
+
+  // The flip failures by the phase's measure.
+  Attempt_history& flip_history()
+  {
+    return flip_histories_[phase_options_.quality_measure == Quality_measure::largest_dihedral_angle ? 1 : 0];
+  }
+
+  // A pass starts: its history on the run's clock, the pass's number, and when
+  // each vertex's neighbourhood last changed. The pass advances the clock at each
+  // change it makes; the caller takes the clock back afterwards.
+  void begin_pass(Attempt_history& history)
+  {
+    history.clock = clock_;
+    history.pass = iteration_;
+    stamp_regions(history);
   }
 
   // The last change within one edge of each vertex, for a pass's history.
@@ -471,10 +496,13 @@ private:
   Dihedral_bounds bounds_;
   Volume_budget volume_budget_;   // unlimited for NODT
   std::optional<Smoothing_sweep<typename View::Kernel>> sweep_;
-  // Per vertex, on the flip history's clock: when it last moved or got a new
-  // star, and when its star last changed.
+  // The run's clock, advanced at each sweep, max-min step, flip and insertion,
+  // and per vertex on it: when it last moved or got a new star, and when its star
+  // last changed.
+  std::size_t clock_ = 0;
   std::vector<std::size_t> changed_at_, new_star_at_;
-  Attempt_history flip_history_, insertion_history_;
+  std::array<Attempt_history, 2> flip_histories_;   // by the minimum sine, by the largest angle
+  Attempt_history insertion_history_;
   std::vector<Candidate> measured_;                  // the flip pass's starting cells
   std::vector<Cell_handle> insertion_candidates_;    // the insertion pass's
   std::vector<Vertex_handle> touched_;               // vertices whose star the last pass changed

@@ -11,6 +11,7 @@
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
 #include <CGAL/BODT_3/internal/Utilities/Candidate_cell.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -18,8 +19,8 @@
 #include <array>
 #include <cstddef>
 #include <functional>
-#include <initializer_list>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <vector>
 
@@ -27,14 +28,34 @@ namespace CGAL {
 namespace BODT_3 {
 namespace internal {
 
-/// One topology pass: the cells whose minimum dihedral sine is below the quality
-/// threshold, worst first by `measure`, each get the best of the edge removals of
-/// their six edges and the multi-face removals rooted at their four faces, if it
-/// raises the worst quality (by `measure`) of the cells it replaces; new cells
-/// below the threshold are tried again. Every accepted flip strictly raises the
-/// worst cell of its region, so the pass ends. The order depends only on the mesh
-/// (ties are broken by `vertex_id`, stable ids of the vertices), so the same input
-/// gives the same output.
+/// The quality by which a flip pass with measure `measure` selects its cells,
+/// given the cell's quality `q` by that measure: the measure itself for the
+/// minimum sine and the largest angle (the phases' measures), the minimum sine
+/// for the others, which exist only to be compared (bench/quality_measures).
+template <class Point>
+double flip_selection_quality(Quality_measure measure, double q, const Point& p0, const Point& p1, const Point& p2,
+                              const Point& p3)
+{
+  if(measure == Quality_measure::min_dihedral_sine || measure == Quality_measure::largest_dihedral_angle) return q;
+  return min_dihedral_sine(p0, p1, p2, p3);
+}
+
+/// One topology pass: the cells whose quality is below the threshold
+/// (`flip_selection_quality`), worst first by `measure`, each get the best of the
+/// edge removals of their six edges and the multi-face removals rooted at their
+/// four faces, if it raises the worst quality (by `measure`) of the cells it
+/// replaces; new cells below the threshold are tried in turn. Every accepted flip
+/// strictly raises the worst cell of its region, so the pass ends.
+///
+/// The cells are taken in rounds: the next `round_size` cells worth trying, in
+/// the queue's order, are evaluated concurrently on the triangulation as it is
+/// when the round starts (the dynamic programs and the candidate cells' qualities
+/// are where the time goes; nothing is written), then their flips are applied in
+/// the same order on one thread. A flip whose cells an earlier flip of the round
+/// replaced, or a cell whose neighbourhood an earlier flip changed, goes back into
+/// the queue. The order depends only on the mesh (ties are broken by `vertex_id`,
+/// stable ids of the vertices) and the round size, never on the threads: the same
+/// input gives the same output on any number of threads.
 template <class Adapter>
 class Flip_pass
 {
@@ -43,12 +64,15 @@ public:
   using Cell_handle = typename Adapter::Cell_handle;
   using Candidate = Candidate_cell<Cell_handle, Vertex_handle>;
 
-  Flip_pass(Adapter& adapter, const Flip_options& opt, const Dihedral_bounds& bounds, Quality_measure measure)
-    : adapter_(adapter), opt_(opt), measure_(measure), ctx_(adapter, bounds, opt.flip_outside, measure)
-  {
-    edge_removal_.max_ring = opt.max_ring;
-    face_removal_.max_faces = opt.max_faces;
-  }
+  /// Cells evaluated together: enough to keep two to eight threads busy, few
+  /// enough that a round's flips seldom meet (measured in doc/scaling.md).
+  static constexpr std::size_t round_size = 256;
+
+  Flip_pass(Adapter& adapter, const Flip_options& opt, const Dihedral_bounds& bounds, Quality_measure measure,
+            int threads)
+    : adapter_(adapter), opt_(opt), measure_(measure), ctx_(adapter, bounds, opt.flip_outside, measure),
+      evaluators_(threads)
+  {}
 
   /// Runs the pass; see `flip_pass` for the arguments.
   template <class Vertex_id>
@@ -60,42 +84,81 @@ public:
     std::priority_queue<Candidate> queue = start_queue(vertex_id, start);
     Topology_stats stats;
     const std::size_t max_flips = 4 * adapter_.tds().number_of_cells() + 16;   // O(1), unlike counting finite cells
+    std::vector<Candidate> round;
     while(!queue.empty() && stats.total() < max_flips)
     {
-      const Candidate e = queue.top();
-      queue.pop();
-      // The history first: it does not read the cell, which is anywhere in memory.
-      if(history && !history->worth_trying(e.ids)) continue;
-      if(!e.still_there(adapter_.tds())) continue;   // replaced since it was queued
-      if(!find_best_flip(e.cell, vertex_id) || !apply_best_flip())
+      round.clear();
+      while(!queue.empty() && round.size() < round_size)
       {
-        if(history) history->record_failure(e.ids);
-        continue;
+        const Candidate e = queue.top();
+        queue.pop();
+        // The history first: it does not read the cell, which is anywhere in memory.
+        if(history && !history->worth_trying(e.ids)) continue;
+        if(e.still_there(adapter_.tds())) round.push_back(e);   // else replaced since it was queued
       }
-      count(stats);
-      if(history) ++history->clock;
-      ++flips_done_;
-      mark_touched(vertex_id, touched, history);
-      for(Cell_handle n : created_)
-        if(!adapter_.triangulation().is_infinite(n))
-          if(const std::optional<Candidate> c = candidate(n, vertex_id)) queue.push(*c);
+      evaluate(round, vertex_id);
+      const std::size_t round_start = flips_done_;
+      for(std::size_t k = 0; k < round.size() && stats.total() < max_flips; ++k)
+      {
+        Evaluation& ev = evaluations_[k];
+        if(touched_since(round_start, ev.neighbourhood))
+        {
+          queue.push(round[k]);   // judged on cells an earlier flip of the round replaced
+          continue;
+        }
+        record_useless(ev, round_start);
+        if(!ev.best.improves())
+        {
+          if(history) history->record_failure(round[k].ids);
+          continue;
+        }
+        if(!apply(ev.best))
+        {
+          if(history) history->record_failure(round[k].ids);
+          continue;
+        }
+        count(ev.best, stats);
+        if(history) ++history->clock;
+        ++flips_done_;
+        mark_touched(vertex_id, touched, history);
+        for(Cell_handle n : created_)
+          if(!adapter_.triangulation().is_infinite(n))
+            if(const std::optional<Candidate> c = candidate(n, vertex_id)) queue.push(*c);
+      }
     }
     stats.seconds = timer.time();
     return stats;
   }
 
 private:
-  // The candidate of cell c, if it is flippable and below the threshold (by its sine).
+  // What evaluating one cell found: its best flip, the edges and faces found
+  // useless, and the ids of the vertices whose stars it read (its own and the
+  // apexes across its faces).
+  struct Evaluation
+  {
+    Flip<Adapter> best;
+    std::vector<std::array<int, 2>> useless_edges;
+    std::vector<std::array<int, 4>> useless_faces;
+    std::array<int, 8> neighbourhood;
+  };
+
+  // A thread's scratch space for evaluations.
+  struct Evaluator
+  {
+    Edge_removal<Adapter> edge_removal;
+    Multi_face_removal<Adapter> face_removal;
+    Flip<Adapter> candidate;
+  };
+
+  // The candidate of cell c, if it is flippable and below the threshold.
   template <class Vertex_id>
   std::optional<Candidate> candidate(Cell_handle c, const Vertex_id& vertex_id) const
   {
     if(!ctx_.flippable(adapter_.region(c))) return std::nullopt;
     const double q = ctx_.quality(c);
-    const double sine = measure_ == Quality_measure::min_dihedral_sine
-                            ? q
-                            : min_dihedral_sine(ctx_.point(c->vertex(0)), ctx_.point(c->vertex(1)),
-                                                ctx_.point(c->vertex(2)), ctx_.point(c->vertex(3)));
-    if(!(sine < opt_.quality_threshold)) return std::nullopt;
+    const double selection = flip_selection_quality(measure_, q, ctx_.point(c->vertex(0)), ctx_.point(c->vertex(1)),
+                                                    ctx_.point(c->vertex(2)), ctx_.point(c->vertex(3)));
+    if(!(selection < opt_.quality_threshold)) return std::nullopt;
     return Candidate::of(c, q, vertex_id);
   }
 
@@ -103,7 +166,8 @@ private:
   template <class Vertex_id>
   std::priority_queue<Candidate> start_queue(const Vertex_id& vertex_id, const std::vector<Candidate>* given) const
   {
-    CGAL_precondition(!given || measure_ == Quality_measure::min_dihedral_sine);
+    CGAL_precondition(!given || measure_ == Quality_measure::min_dihedral_sine ||
+                      measure_ == Quality_measure::largest_dihedral_angle);
     std::vector<Candidate> start;
     if(given)
     {
@@ -122,17 +186,34 @@ private:
     return std::priority_queue<Candidate>(std::less<Candidate>(), std::move(start));
   }
 
-  // The best improving flip of cell c, in `best_`: edge removals of its six edges,
-  // multi-face removals at its four faces. Within the pass geometry is fixed, so an
-  // edge or a face found useless stays so until a flip touches its vertices.
+  // Every cell of the round evaluated on the triangulation as it is now, concurrently.
   template <class Vertex_id>
-  bool find_best_flip(Cell_handle c, const Vertex_id& vertex_id)
+  void evaluate(const std::vector<Candidate>& round, const Vertex_id& vertex_id)
   {
+    if(evaluations_.size() < round.size()) evaluations_.resize(round.size());
+    evaluators_.for_each(0, static_cast<int>(round.size()), [&](Evaluator& w, int k) {
+      find_best_flip(round[k].cell, vertex_id, w, evaluations_[k]);
+    }, 1);
+  }
+
+  // The best improving flip of cell c: edge removals of its six edges, multi-face
+  // removals at its four faces. Within the pass geometry is fixed, so an edge or a
+  // face found useless stays so until a flip touches its vertices.
+  template <class Vertex_id>
+  void find_best_flip(Cell_handle c, const Vertex_id& vertex_id, Evaluator& w, Evaluation& ev) const
+  {
+    w.edge_removal.max_ring = opt_.max_ring;
+    w.face_removal.max_faces = opt_.max_faces;
+    ev.best.clear();
+    ev.useless_edges.clear();
+    ev.useless_faces.clear();
     std::array<int, 4> id;   // the ids of c's vertices in c's order: looked up once
     for(int k = 0; k < 4; ++k) id[k] = vertex_id(c->vertex(k));
-    best_.clear();
+    ev.neighbourhood.fill(-1);
+    std::copy(id.begin(), id.end(), ev.neighbourhood.begin());
+    Flip<Adapter>& candidate = w.candidate;
     auto consider = [&]() {
-      if(candidate_.improves() && candidate_.new_worst > best_.new_worst) std::swap(best_, candidate_);
+      if(candidate.improves() && candidate.new_worst > ev.best.new_worst) std::swap(ev.best, candidate);
     };
     for(int i = 0; i < 4; ++i)
       for(int j = i + 1; j < 4; ++j)
@@ -142,11 +223,11 @@ private:
         if(known && still_useless(*known, {id[i], id[j]})) continue;
         // Only the best proposal for this cell counts: what cannot beat the best so
         // far is cut short, and then says nothing about the edge's own worth.
-        const double at_least = best_.improves() ? best_.new_worst : -std::numeric_limits<double>::infinity();
-        if(edge_removal_(ctx_, c, i, j, candidate_, at_least) && candidate_.improves())
+        const double at_least = ev.best.improves() ? ev.best.new_worst : -std::numeric_limits<double>::infinity();
+        if(w.edge_removal(ctx_, c, i, j, candidate, at_least) && candidate.improves())
           consider();
-        else if(!best_.improves() || candidate_.old_worst >= at_least)
-          useless_edges_.assign(key, flips_done_);
+        else if(!ev.best.improves() || candidate.old_worst >= at_least)
+          ev.useless_edges.push_back(key);
       }
     for(int i = 0; i < 4; ++i)
     {
@@ -158,33 +239,43 @@ private:
         if(k != i) key[m++] = id[k];
       std::sort(key.begin(), key.begin() + 3);
       const int apex_id = vertex_id(apex);
+      ev.neighbourhood[4 + i] = apex_id;
       key[3] = std::min(apex_id, id[i]);
       const std::size_t* known = useless_faces_.find(key);
       if(known && still_useless(*known, {id[0], id[1], id[2], id[3], apex_id})) continue;
-      if(face_removal_(ctx_, c, i, candidate_) && candidate_.improves())
+      if(w.face_removal(ctx_, c, i, candidate) && candidate.improves())
         consider();
       else
-        useless_faces_.assign(key, flips_done_);
+        ev.useless_faces.push_back(key);
     }
-    return best_.improves();
   }
 
-  bool apply_best_flip()
+  // Marks what an evaluation found useless, as of the state it was judged on.
+  void record_useless(const Evaluation& ev, std::size_t when)
+  {
+    for(const auto& key : ev.useless_edges) useless_edges_.assign(key, when);
+    for(const auto& key : ev.useless_faces) useless_faces_.assign(key, when);
+  }
+
+  // The round's flips are checked against each other (`touched_since`), so the
+  // cells are there; replace_cells still refuses, changing nothing, a change it
+  // cannot make, and then the cell counts as tried in vain.
+  bool apply(const Flip<Adapter>& flip)
   {
     created_.clear();
-    return replace_cells(adapter_, best_.old_cells, best_.new_cells, best_.new_facets, &created_);
+    return replace_cells(adapter_, flip.old_cells, flip.new_cells, flip.new_facets, &created_);
   }
 
-  void count(Topology_stats& stats) const
+  static void count(const Flip<Adapter>& flip, Topology_stats& stats)
   {
-    switch(best_.kind)
+    switch(flip.kind)
     {
     case Flip_kind::flip_2_3: ++stats.flips_2_3; break;
     case Flip_kind::flip_3_2: ++stats.flips_3_2; break;
     case Flip_kind::edge_removal: ++stats.edge_removals; break;
     case Flip_kind::multi_face_removal: ++stats.multi_face_removals; break;
     }
-    if(best_.boundary) ++stats.boundary_flips;
+    if(flip.boundary) ++stats.boundary_flips;
   }
 
   // The vertices of the created cells: their stars changed.
@@ -203,21 +294,28 @@ private:
       }
   }
 
-  // Whether no flip touched the (finite) vertices with these ids since `when`.
-  bool still_useless(std::size_t when, std::initializer_list<int> ids) const
+  // Whether a flip touched a vertex with one of these ids after `when` flips.
+  // Every cell an evaluation of cell c reads holds a vertex of c or the apex
+  // across one of c's faces (the rings of c's edges, the cells between the two
+  // apexes of a face removal), and a flip that replaces a cell touches all of
+  // that cell's vertices: an evaluation none of whose vertices was touched since
+  // it was made still holds.
+  template <class Ids>
+  bool touched_since(std::size_t when, const Ids& ids) const
   {
     for(int id : ids)
-      if(id < static_cast<int>(touched_at_.size()) && touched_at_[id] > when) return false;
-    return true;
+      if(id >= 0 && id < static_cast<int>(touched_at_.size()) && touched_at_[id] > when) return true;
+    return false;
   }
+
+  bool still_useless(std::size_t when, std::initializer_list<int> ids) const { return !touched_since(when, ids); }
 
   Adapter& adapter_;
   const Flip_options& opt_;
   Quality_measure measure_;
   const Flip_context<Adapter> ctx_;
-  Edge_removal<Adapter> edge_removal_;
-  Multi_face_removal<Adapter> face_removal_;
-  Flip<Adapter> candidate_, best_;
+  Thread_workers<Evaluator> evaluators_;
+  std::vector<Evaluation> evaluations_;
   std::vector<Cell_handle> created_;
   Id_tuple_map<2, std::size_t> useless_edges_;
   Id_tuple_map<4, std::size_t> useless_faces_;   // face ids and apex
@@ -225,24 +323,26 @@ private:
   std::size_t flips_done_ = 0;
 };
 
-/// One flip pass (`Flip_pass`) on the triangulation behind `adapter`.
+/// One flip pass (`Flip_pass`) on the triangulation behind `adapter`, on
+/// `threads` threads (as `Smoothing_options::threads`; the result does not depend on it).
 ///
 /// `touched` receives the vertices of every cell created (with repetitions).
 /// `history` (optional) lets the pass skip cells tried in vain before whose
 /// neighbourhood has not changed since. `candidates` (optional, with the minimum
-/// dihedral sine as measure) are the cells to start from, flippable and measured,
-/// a superset of the flippable cells below the threshold (the caller may know
-/// them without measuring every cell); by default every finite cell is measured.
-/// The result does not depend on which superset is given.
+/// dihedral sine or the largest angle as measure) are the cells to start from,
+/// flippable and measured, a superset of the flippable cells below the threshold
+/// (the caller may know them without measuring every cell); by default every
+/// finite cell is measured. The result does not depend on which superset is given.
 template <class Adapter, class Vertex_id>
 Topology_stats flip_pass(Adapter& adapter, const Flip_options& opt, const Dihedral_bounds& bounds,
                          const Vertex_id& vertex_id, std::vector<typename Adapter::Vertex_handle>& touched,
                          Attempt_history* history = nullptr,
                          Quality_measure measure = Quality_measure::min_dihedral_sine,
                          const std::vector<Candidate_cell<typename Adapter::Cell_handle,
-                                                          typename Adapter::Vertex_handle>>* candidates = nullptr)
+                                                          typename Adapter::Vertex_handle>>* candidates = nullptr,
+                         int threads = 1)
 {
-  return Flip_pass<Adapter>(adapter, opt, bounds, measure)(vertex_id, touched, history, candidates);
+  return Flip_pass<Adapter>(adapter, opt, bounds, measure, threads)(vertex_id, touched, history, candidates);
 }
 
 } // namespace internal
