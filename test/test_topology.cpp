@@ -335,7 +335,10 @@ TEST(Flips, MultiFaceRemovalChoosesTheBetterConfiguration)
       if(made)
       {
         ++created;
-        EXPECT_GT(after.worst, before.worst);
+        // Every flip raises the worst cell of the cells it replaces; the mesh's worst
+        // rises too unless a cell as bad stays outside them, as in the symmetric ring
+        // 4 at height 1.5.
+        EXPECT_GE(after.worst, before.worst);
         EXPECT_EQ(after.cells, static_cast<std::size_t>(m));
         if(m == 3) { EXPECT_EQ(stats.flips_2_3, 1u); }
       }

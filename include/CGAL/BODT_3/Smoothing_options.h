@@ -115,7 +115,7 @@ struct Smoothing_options
   /// `unlimited_iteration_cap` iterations (CGAL's optimizers cap 0 the same way).
   std::size_t max_iteration_number = 20;
   double time_limit = 0;                   // seconds; 0 means no limit
-  /// Threads of the smoothing sweeps; 0: every core the process may use. The
+  /// Threads of the sweeps, max-min steps and flip evaluations; 0: every core the process may use. The
   /// output does not depend on it (doc/manual.md, "Threads").
   int threads = 0;
   /// Stop when no vertex moved by more than this fraction of its local size

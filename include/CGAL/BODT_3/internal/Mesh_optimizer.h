@@ -78,10 +78,11 @@ inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
   Smoothing_options lower = opt;
   lower.quality_measure = Quality_measure::largest_dihedral_angle;
   lower.vertex_insertion = false;
-  // Flips and max-min steps where an angle is above the threshold: where the
-  // phase's measure says there is something to gain.
+  // Max-min steps where an angle is above the threshold; flips around those
+  // cells, where an angle is also below its supplement (the flip pass selects by
+  // sine), since a flat cell often goes only with its neighbours.
   lower.max_min_threshold = largest_angle_quality(opt.largest_angle_threshold);
-  lower.flips.quality_threshold = largest_angle_quality(opt.largest_angle_threshold);
+  lower.flips.quality_threshold = dihedral_sine(opt.largest_angle_threshold);
   phases.push_back({1, lower});
 
   Smoothing_options last = opt;
@@ -227,7 +228,10 @@ private:
     added_.clear();
     // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
     const bool known = guard_knows() && !opt.flips.flip_outside;
-    if(known) collect_below(opt.flips.quality_threshold, measured_, [this](std::size_t c) { return measure(c); });
+    if(known && opt.quality_measure == Quality_measure::largest_dihedral_angle)
+      collect_around(largest_angle_quality(opt.largest_angle_threshold), measured_);
+    else if(known)
+      collect_below(opt.flips.quality_threshold, measured_, [this](std::size_t c) { return measure(c); });
     stats.topology = flip_pass(adapter_, opt.flips, bounds_, vertex_id(), touched_, &history, opt.quality_measure,
                                known ? &measured_ : nullptr, options_.threads);
     clock_ = history.clock;
@@ -335,8 +339,8 @@ private:
   }
 
   // With the guard on, the sweep knows every mesh cell's quality by the phase's
-  // measure, so the flip pass can start from the cells below its threshold
-  // (`flip_selection_quality`) ...
+  // measure, so the flip pass can start from the cells where there is something
+  // to gain (`collect_below`, `collect_around`) ...
   bool guard_knows() const
   {
     const Quality_measure m = phase_options_.quality_measure;
@@ -357,6 +361,26 @@ private:
     std::vector<std::vector<T>> found(block_count(mesh_.cells.size()));
     for_mesh_cells([&](int b, std::size_t c) {
       if(sweep_->cell_quality(static_cast<int>(c)) < threshold) found[static_cast<std::size_t>(b)].push_back(make(c));
+    });
+    out.clear();
+    for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());
+  }
+
+  // The mesh cells with a vertex of a cell below `threshold`, measured: where the
+  // largest-angle phase's flips start. Only there can a flip help a bad cell,
+  // itself or by freeing its vertices for the max-min steps; the pass picks among
+  // them by sine.
+  void collect_around(double threshold, std::vector<Candidate>& out)
+  {
+    std::vector<int> bad;
+    collect_below(threshold, bad, [](std::size_t c) { return static_cast<int>(c); });
+    std::vector<char> near(mesh_.number_of_vertices(), 0);
+    for(int c : bad)
+      for(int v : mesh_.cells[c]) near[v] = 1;
+    std::vector<std::vector<Candidate>> found(block_count(mesh_.cells.size()));
+    for_mesh_cells([&](int b, std::size_t c) {
+      const auto& q = mesh_.cells[c];
+      if(near[q[0]] || near[q[1]] || near[q[2]] || near[q[3]]) found[static_cast<std::size_t>(b)].push_back(measure(c));
     });
     out.clear();
     for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());

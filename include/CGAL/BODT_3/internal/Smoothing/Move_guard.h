@@ -69,8 +69,7 @@ public:
     Refusal last_refusal = Refusal::worsens_quality;
     Refusal first_refusal = Refusal::worsens_quality;   // of the full-length move
     Volume_change volume;
-    double cost = 0;    // of the position judged last, in the budget's units
-    double spent = 0;   // by the moves of this vertex accepted since the allowance was set (max-min steps)
+    double cost = 0;   // of the position judged last, in the budget's units
   };
 
   /// `threads` measure the cells (`refresh`); nothing depends on their number.
@@ -211,7 +210,7 @@ public:
         }
       }
       trial.cost = budget_->cost(trial.volume);
-      if(!(trial.spent + trial.cost <= allowance_))
+      if(!(trial.cost <= allowance_))
       {
         trial.last_refusal = Refusal::changes_volume;
         return false;

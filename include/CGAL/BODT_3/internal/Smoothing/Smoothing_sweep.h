@@ -41,7 +41,7 @@ public:
                   const Dihedral_bounds& bounds, Volume_budget* budget = nullptr)
     : mesh_(mesh), classification_(classification), opt_(opt),
       guard_(mesh, opt.quality_guard, bounds, opt.quality_measure, opt.threads, budget), budget_(budget),
-      workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1), max_min_worth_(mesh.number_of_vertices(), 1), moved_now_(mesh.number_of_vertices(), 0),
+      workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1), moved_now_(mesh.number_of_vertices(), 0),
       moved_once_(mesh.number_of_vertices(), 0), cost_(mesh.number_of_vertices(), 0)
   {
     if(opt.smoothing_method == Smoothing_method::NODT) projection_ = std::make_unique<Boundary_projection<K>>(mesh);
@@ -54,11 +54,10 @@ public:
   void refresh(const std::vector<int>& changed)
   {
     dirty_.resize(mesh_.number_of_vertices(), 1);
-    max_min_worth_.resize(mesh_.number_of_vertices(), 1);
     moved_now_.resize(mesh_.number_of_vertices(), 0);
     moved_once_.resize(mesh_.number_of_vertices(), 0);
     cost_.resize(mesh_.number_of_vertices(), 0);
-    for(int v : changed) dirty_[v] = max_min_worth_[v] = 1;
+    for(int v : changed) dirty_[v] = 1;
     derive();
     for(int v : changed)
       mark_dependents(v);
@@ -92,7 +91,7 @@ public:
         moved_now_[v] = 0;
         moved_once_[v] = 1;
         moved_.push_back(v);
-        dirty_[v] = max_min_worth_[v] = 1;
+        dirty_[v] = 1;
         mark_dependents(v);
       }
     }
@@ -116,49 +115,68 @@ public:
   /// subdomain's volume and its feature, `Volume_preserving_move::free_directions`,
   /// both ways, from a fifth of its shortest edge down to a thousandth) that raise
   /// the worst cell of its star, through the guard. Needs the quality guard.
-  /// Colour by colour, as the sweep: vertices of one colour share no cell, so
-  /// their steps run concurrently and the result does not depend on the threads.
-  /// A vertex whose steps failed is tried again only once its star changed.
   void raise_worst(double threshold, Iteration_stats& stats)
   {
+    // Each accepted step raises the star's worst cell, but by as little as it
+    // likes: with the largest angle as the measure, some vertices zigzag at the
+    // smallest step for thousands of steps (the small generated sharp_part). At
+    // most this many rounds (a step or a halving) per vertex and call.
+    constexpr int max_min_steps = 200;
     if(!opt_.quality_guard) return;
-    std::vector<char> wanted(mesh_.number_of_vertices(), 0);
+    std::vector<int> vertices;
     for(std::size_t c = 0; c < mesh_.cells.size(); ++c)
       if(mesh_.in_mesh[c] && guard_.cell_quality(static_cast<int>(c)) < threshold)
-        for(int v : mesh_.cells[c]) wanted[v] = 1;
-    std::vector<int> colour;
-    for(std::size_t k = 0; k + 1 < order_.colour_begin.size(); ++k)
+        vertices.insert(vertices.end(), mesh_.cells[c].begin(), mesh_.cells[c].end());
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    Vertex_star<K> star;
+    Vector dirs[3];
+    for(int v : vertices)
     {
-      colour.clear();
-      for(int i = order_.colour_begin[k]; i < order_.colour_begin[k + 1]; ++i)
+      const Vertex_kind kind = classification_.kind[v];
+      if(kind == Vertex_kind::fixed) continue;
+      mesh_.gather_star(v, star);
+      const int n = mover_.free_directions(star, kind, feature_direction(v, star), dirs);
+      if(n == 0) continue;
+      double shortest = std::numeric_limits<double>::infinity();
+      for(const auto& c : star.cells)
+        for(const auto* p : {&c.a, &c.b, &c.c}) shortest = std::min(shortest, CGAL::squared_distance(star.x0, *p));
+      shortest = std::sqrt(shortest);
+      double worst = guard_.worst_around(v);
+      bool moved = false;
+      int steps = 0;
+      for(double h = 0.2 * shortest; h > 1e-3 * shortest && steps < max_min_steps; ++steps)
       {
-        const int v = order_.vertices[i];
-        if(wanted[v] && max_min_worth_[v]) colour.push_back(v);
-      }
-      if(colour.empty()) continue;
-      // The colour's steps share one allowance, as a colour's moves in the sweep.
-      if(budget_)
-      {
-        std::size_t priced = 0;
-        for(int v : colour) priced += !guard_.keeps_volume(v);
-        guard_.allow(budget_->allowance(priced));
-      }
-      workers_.for_each(0, static_cast<int>(colour.size()), [&](Worker& w, int i) { max_min_steps(colour[i], w); }, 1);
-      for(int v : colour)
-      {
-        if(!moved_now_[v])
+        typename K::Point_3 best;
+        double best_worst = worst;
+        for(int d = 0; d < n; ++d)
+          for(double sign : {1.0, -1.0})
+          {
+            const typename K::Point_3 p = mesh_.points[v] + (sign * h) * dirs[d];
+            if(budget_) guard_.allow(budget_->allowance());
+            if(guard_.accepts(v, p, trial_) && Move_guard<K>::accepted_worst(trial_) > best_worst)
+            {
+              best_worst = Move_guard<K>::accepted_worst(trial_);
+              best = p;
+            }
+          }
+        if(best_worst > worst)
         {
-          max_min_worth_[v] = 0;
-          continue;
+          guard_.accepts(v, best, trial_);
+          guard_.apply(v, best, trial_);
+          if(budget_) budget_->spend(trial_.cost);
+          worst = best_worst;
+          moved = true;
         }
-        if(budget_) budget_->spend(cost_[v]);
-        moved_now_[v] = 0;
-        ++stats.max_min_moves;
-        moved_.push_back(v);
-        moved_once_[v] = 1;
-        dirty_[v] = 1;
-        mark_dependents(v);
+        else
+          h *= 0.5;
       }
+      if(!moved) continue;
+      ++stats.max_min_moves;
+      moved_.push_back(v);
+      moved_once_[v] = 1;
+      dirty_[v] = 1;
+      mark_dependents(v);
     }
   }
 
@@ -214,68 +232,13 @@ private:
     return nb[0] >= 0 ? mesh_.points[nb[1]] - mesh_.points[nb[0]] : tensor_vote(star, opt_.tensor_voting).direction;
   }
 
-  // A thread's scratch space and counts.
+  // What one thread keeps: its scratch space and its counts of the sweep.
   struct Worker
   {
     Vertex_star<K> star;
     typename Move_guard<K>::Trial trial;
     Iteration_stats counts;
   };
-
-  // Vertex v's compass steps (see `raise_worst`); writes only the vertex, the
-  // qualities of its star's cells, its own flags and the worker. Each accepted step
-  // raises the star's worst cell, but by as little as it likes: with the largest
-  // angle as the measure, some vertices zigzag at the smallest step for thousands
-  // of steps (the small generated sharp_part), so at most `max_rounds` rounds (a
-  // step or a halving) per vertex and call.
-  void max_min_steps(int v, Worker& w)
-  {
-    constexpr int max_rounds = 200;
-    const Vertex_kind kind = classification_.kind[v];
-    if(kind == Vertex_kind::fixed) return;
-    Vertex_star<K>& star = w.star;
-    mesh_.gather_star(v, star);
-    Vector dirs[3];
-    const int n = mover_.free_directions(star, kind, feature_direction(v, star), dirs);
-    if(n == 0) return;
-    double shortest = std::numeric_limits<double>::infinity();
-    for(const auto& c : star.cells)
-      for(const auto* p : {&c.a, &c.b, &c.c}) shortest = std::min(shortest, CGAL::squared_distance(star.x0, *p));
-    shortest = std::sqrt(shortest);
-    double worst = guard_.worst_around(v);
-    auto& trial = w.trial;
-    trial.spent = 0;
-    int rounds = 0;
-    for(double h = 0.2 * shortest; h > 1e-3 * shortest && rounds < max_rounds; ++rounds)
-    {
-      typename K::Point_3 best;
-      double best_worst = worst;
-      for(int d = 0; d < n; ++d)
-        for(double sign : {1.0, -1.0})
-        {
-          const typename K::Point_3 p = mesh_.points[v] + (sign * h) * dirs[d];
-          if(guard_.accepts(v, p, trial) && Move_guard<K>::accepted_worst(trial) > best_worst)
-          {
-            best_worst = Move_guard<K>::accepted_worst(trial);
-            best = p;
-          }
-        }
-      if(best_worst > worst)
-      {
-        guard_.accepts(v, best, trial);
-        guard_.apply(v, best, trial);
-        trial.spent += trial.cost;
-        worst = best_worst;
-        moved_now_[v] = 1;
-      }
-      else
-        h *= 0.5;
-    }
-    cost_[v] = trial.spent;
-    trial.spent = 0;
-  }
-
-  // What one thread keeps: its scratch space and its counts of the sweep.
 
   // One vertex's move; writes only the vertex, the qualities of its star's cells,
   // its own flags and the worker.
@@ -315,14 +278,9 @@ private:
     stats.max_relative_move = std::max(stats.max_relative_move, fraction * std::sqrt(X.squared_length()) / size);
   }
 
-  // The vertices whose stars moving v changed: their verdicts may change.
   void mark_dependents(int v)
   {
-    for(int k = dependent_begin_[v]; k < dependent_begin_[v + 1]; ++k)
-    {
-      dirty_[dependents_[k]] = 1;
-      max_min_worth_[dependents_[k]] = 1;
-    }
+    for(int k = dependent_begin_[v]; k < dependent_begin_[v + 1]; ++k) dirty_[dependents_[k]] = 1;
   }
 
   Flat_mesh<K>& mesh_;
@@ -330,6 +288,7 @@ private:
   const Smoothing_options& opt_;
   Move_guard<K> guard_;
   Volume_budget* budget_;   // null: volume not priced
+  typename Move_guard<K>::Trial trial_;   // for the sequential max-min steps
   Thread_workers<Worker> workers_;
   Volume_preserving_move mover_;
   std::unique_ptr<Boundary_projection<K>> projection_;   // NODT: the input's boundary
@@ -337,7 +296,6 @@ private:
   std::vector<int> dependent_begin_;   // per vertex, into dependents_
   std::vector<int> dependents_;
   std::vector<char> dirty_;
-  std::vector<char> max_min_worth_;   // whether max-min steps may move the vertex (its star changed since they failed)
   std::vector<char> moved_now_;   // moved in the colour being swept
   std::vector<char> moved_once_;
   std::vector<double> cost_;   // of each vertex's move in the colour being swept

@@ -28,15 +28,15 @@ namespace CGAL {
 namespace BODT_3 {
 namespace internal {
 
-/// The quality by which a flip pass with measure `measure` selects its cells,
-/// given the cell's quality `q` by that measure: the measure itself for the
-/// minimum sine and the largest angle (the phases' measures), the minimum sine
-/// for the others, which exist only to be compared (bench/quality_measures).
+/// The quality by which a flip pass selects its cells, given the cell's quality
+/// `q` by the pass's measure: the minimum dihedral sine, which is `q` when that is
+/// the measure. With the largest angle as the measure, a cell with a small angle
+/// is selected too: a flat cell often goes only with its neighbours.
 template <class Point>
 double flip_selection_quality(Quality_measure measure, double q, const Point& p0, const Point& p1, const Point& p2,
                               const Point& p3)
 {
-  if(measure == Quality_measure::min_dihedral_sine || measure == Quality_measure::largest_dihedral_angle) return q;
+  if(measure == Quality_measure::min_dihedral_sine) return q;
   return min_dihedral_sine(p0, p1, p2, p3);
 }
 
@@ -174,7 +174,10 @@ private:
       for(const Candidate& m : *given)
       {
         CGAL_assertion(ctx_.flippable(adapter_.region(m.cell)));
-        if(m.quality < opt_.quality_threshold) start.push_back(m);
+        const Cell_handle c = m.cell;
+        if(flip_selection_quality(measure_, m.quality, ctx_.point(c->vertex(0)), ctx_.point(c->vertex(1)),
+                                  ctx_.point(c->vertex(2)), ctx_.point(c->vertex(3))) < opt_.quality_threshold)
+          start.push_back(m);
       }
     }
     else
@@ -329,10 +332,10 @@ private:
 /// `touched` receives the vertices of every cell created (with repetitions).
 /// `history` (optional) lets the pass skip cells tried in vain before whose
 /// neighbourhood has not changed since. `candidates` (optional, with the minimum
-/// dihedral sine or the largest angle as measure) are the cells to start from,
-/// flippable and measured, a superset of the flippable cells below the threshold
-/// (the caller may know them without measuring every cell); by default every
-/// finite cell is measured. The result does not depend on which superset is given.
+/// dihedral sine or the largest angle as measure) are the cells the pass may start
+/// from, flippable and measured; it starts from those below the threshold (the
+/// caller may know them without measuring every cell, or choose where to work).
+/// By default every finite cell is measured.
 template <class Adapter, class Vertex_id>
 Topology_stats flip_pass(Adapter& adapter, const Flip_options& opt, const Dihedral_bounds& bounds,
                          const Vertex_id& vertex_id, std::vector<typename Adapter::Vertex_handle>& touched,
