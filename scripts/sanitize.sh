@@ -5,7 +5,7 @@
 # usage: scripts/sanitize.sh [--all] [ctest arguments...]   e.g. scripts/sanitize.sh --all -R Smoothing
 #   (default)  the tests that mesh nothing with Mesh_3 (ctest label `light`: readers and
 #              writers, classification, moves, the shape of labelled boxes, parameters,
-#              reports); CI runs these (.ci/run)
+#              reports); CI runs neither set (doc/manual.md, section 4)
 #   --all      every test that runs the package's code (labels `light` and `mesh_3`: also
 #              the pipeline on the Mesh_3-generated inputs, the conversions, the topology,
 #              insertion, the command line and the example)

@@ -55,12 +55,11 @@ double jitter(int i, int j, int k, int axis)
   return static_cast<double>(h % 10001u) / 10000.0 - 0.5;
 }
 
-// A 4x4x4 grid of unit cubes, each split into the 6 tetrahedra around its main
+// An n x n x n grid of unit cubes (4 by default), each split into the 6 tetrahedra around its main
 // diagonal (a conforming mesh), with the interior grid points moved by up to 0.15
 // on each axis so that smoothing has something to improve.
-Tet_mesh jittered_grid()
+Tet_mesh jittered_grid(int n = 4)
 {
-  const int n = 4;
   Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
   for(int k = 1; k < n; ++k)
     for(int j = 1; j < n; ++j)
@@ -752,12 +751,7 @@ TEST(MeshPictures, CutPlanesAreReadOrRefusedWithTheReason)
 TEST(MeshPictures, LargeMeshesAreSimplifiedWithinTheBudget)
 {
   const int n = 24;
-  Tet_mesh m = bodt_test::cube_grid(n, [](int, int, int) { return 1; });
-  for(int k = 1; k < n; ++k)
-    for(int j = 1; j < n; ++j)
-      for(int i = 1; i < n; ++i)
-        m.points[bodt_test::grid_index(n, i, j, k)] =
-            Point(i + 0.3 * jitter(i, j, k, 0), j + 0.3 * jitter(i, j, k, 1), k + 0.3 * jitter(i, j, k, 2));
+  const Tet_mesh m = jittered_grid(n);
   const bodt_report::Picture_options options;
   const std::string html = bodt_report::mesh_pictures_html(m, m, options);
   const std::vector<Svg_picture> p = pictures_of(html);
