@@ -103,6 +103,7 @@ const std::vector<Option>& smoothing_options()
       {"iterations", set_iterations},
       {"time_limit", [](BODT::Smoothing_options& o, py::handle v) { o.time_limit = v.cast<double>(); }},
       {"convergence", [](BODT::Smoothing_options& o, py::handle v) { o.convergence = v.cast<double>(); }},
+      {"freeze_bound", [](BODT::Smoothing_options& o, py::handle v) { o.freeze_bound = v.cast<double>(); }},
       {"method",
        [](BODT::Smoothing_options& o, py::handle v) {
          const std::string m = v.cast<std::string>();

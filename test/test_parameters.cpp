@@ -57,6 +57,7 @@ TEST(Parameters, ChainSetsEveryOption)
   const auto p = params::max_iteration_number(7)
                      .time_limit(3.5)
                      .convergence(0.01)
+                     .freeze_bound(0.002)
                      .moving_vertices(BODT::Moving_vertices::NONE)
                      .preserve_features(false)
                      .quality_guard(false)
@@ -71,6 +72,7 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_EQ(o.max_iteration_number, 7u);
   EXPECT_EQ(o.time_limit, 3.5);
   EXPECT_EQ(o.convergence, 0.01);
+  EXPECT_EQ(o.freeze_bound, 0.002);
   EXPECT_EQ(o.moving_vertices, BODT::Moving_vertices::NONE);
   EXPECT_FALSE(o.preserve_features);
   EXPECT_FALSE(o.quality_guard);
@@ -117,6 +119,32 @@ TEST(Parameters, BothStylesGiveTheSameMesh)
   EXPECT_EQ(code_b, code_a);
   EXPECT_EQ(points_of(a), points_of(b));
   EXPECT_NE(points_of(a), points_of(c)) << "quality_guard did not reach the smoother";
+}
+
+// freeze_bound keeps every vertex whose move is shorter than that fraction of its
+// local size where it is: with a bound no move reaches, the sweeps move nothing;
+// with 0, they move vertices; both styles set it.
+TEST(Parameters, FreezeBoundKeepsShortMovesOut)
+{
+  const Delaunay input = random_ball();
+  auto sweeps_only = [](double freeze) {
+    return params::max_iteration_number(3)
+        .freeze_bound(freeze)
+        .topology_optimization(false)
+        .vertex_insertion(false)
+        .max_min_threshold(0)
+        .largest_angle_phase(false);
+  };
+  Delaunay frozen = input, free = input, keyword = input;
+  const auto code = CGAL::bodt_optimize_mesh_3(frozen, sweeps_only(1e9));
+  CGAL::bodt_optimize_mesh_3(free, sweeps_only(0));
+  EXPECT_EQ(code, CGAL::CANT_IMPROVE_ANYMORE);
+  EXPECT_EQ(points_of(frozen), points_of(input));
+  EXPECT_NE(points_of(free), points_of(input));
+  CGAL::bodt_optimize_mesh_3(keyword, params::max_iteration_number = 3, params::freeze_bound = 1e9,
+                             params::topology_optimization = false, params::vertex_insertion = false,
+                             params::max_min_threshold = 0, params::largest_angle_phase = false);
+  EXPECT_EQ(points_of(keyword), points_of(input));
 }
 
 TEST(Parameters, VisitorIsCalledInBothStyles)

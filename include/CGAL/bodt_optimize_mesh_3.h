@@ -147,6 +147,11 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
  *     \cgalParamDescription{stop when no vertex moved by more than this fraction of its local size}
  *     \cgalParamType{`double`} \cgalParamDefault{0: off (0.02 when `max_iteration_number` is 0)}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{freeze_bound}
+ *     \cgalParamDescription{a vertex whose move is shorter than this fraction of its local size stays put
+ *       until a neighbour moves (as in CGAL's optimizers); 0: every vertex moves every time}
+ *     \cgalParamType{`double`} \cgalParamDefault{0.0003}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{moving_vertices}
  *     \cgalParamDescription{`ALL` (B-ODT), `INTERIOR` (the original ODT, the paper's baseline) or
  *       `NONE` (topology optimization and insertion alone)}
@@ -206,7 +211,7 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
  *     \cgalParamType{a class} \cgalParamDefault{none}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
- * CGAL's `freeze_bound`, `do_freeze` and `sliver_bound` are compile errors that say why.
+ * CGAL's `do_freeze` and `sliver_bound` are compile errors that say why.
  *
  * \return `MAX_ITERATION_NUMBER_REACHED`, `TIME_LIMIT_REACHED`, `CONVERGENCE_REACHED`, or
  *   `CANT_IMPROVE_ANYMORE` when an iteration changed nothing; `std::cout << code` prints its name.

@@ -75,6 +75,8 @@ def smooth(points, tets=None, labels=None, triangles=None, triangle_labels=None,
     time_limit (0: none): seconds; the run stops after the sweep that passes it.
     convergence (0: off): stop when no vertex moved by more than this fraction of
         its local size.
+    freeze_bound (0.0003): a vertex whose move is shorter than this fraction of its
+        local size stays put until a neighbour moves; 0: every vertex moves every time.
     method ('bodt'): 'bodt', every vertex moves; 'odt', interior vertices only;
         'flips', no vertex moves (flips and insertion alone); 'nodt', boundary
         vertices by Natural ODT, projected back onto the input's boundary (the

@@ -112,7 +112,7 @@ class Arrays(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "labels"):
             bodt.smooth(points, tets, labels[:-1])
         with self.assertRaises(TypeError):
-            bodt.smooth(points, tets, freeze_bound=0.01)
+            bodt.smooth(points, tets, sliver_bound=0.01)
         flat = points.copy()
         flat[tets[0]] = flat[tets[0][0]] + np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]) * 1e-3
         with self.assertRaises(ValueError):

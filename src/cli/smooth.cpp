@@ -249,6 +249,10 @@ Command add_smooth(CLI::App& command)
   command.add_option("--convergence", o->smoothing.convergence,
                      "stop when no vertex moved by more than this fraction of its local size (default 0: off)")
       ->check(CLI::NonNegativeNumber);
+  command.add_option("--freeze-bound", o->smoothing.freeze_bound,
+                     "a vertex whose move is shorter than this fraction of its local size stays put until a "
+                     "neighbour moves (default 0.0003; 0: every vertex moves every time)")
+      ->check(CLI::NonNegativeNumber);
   command.add_option("--method", o->method,
                      "bodt: every vertex moves (default); odt: interior vertices only; flips: no vertex moves, "
                      "flips alone; nodt: surface vertices by Natural ODT, projected back on the input boundary "

@@ -148,6 +148,7 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"max_iteration_number", o.max_iteration_number},
                      {"time_limit", o.time_limit},
                      {"convergence", o.convergence},
+                     {"freeze_bound", o.freeze_bound},
                      {"preserve_features", o.preserve_features},
                      {"quality_guard", o.quality_guard},
                      {"topology_optimization", o.topology_optimization},

@@ -66,6 +66,11 @@ inline void set_parameter(Smoothing_options& o, cgal_tag::max_iteration_number_,
   o.max_iteration_number = static_cast<std::size_t>(v);
 }
 inline void set_parameter(Smoothing_options& o, cgal_tag::convergence_, double v) { o.convergence = v; }
+inline void set_parameter(Smoothing_options& o, cgal_tag::freeze_bound_, double v)
+{
+  CGAL_precondition(v >= 0);
+  o.freeze_bound = v;
+}
 inline void set_parameter(Smoothing_options& o, tag::moving_vertices_, Moving_vertices v) { o.moving_vertices = v; }
 inline void set_parameter(Smoothing_options& o, tag::smoothing_method_, Smoothing_method v) { o.smoothing_method = v; }
 inline void set_parameter(Smoothing_options& o, tag::preserve_features_, bool v) { o.preserve_features = v; }
@@ -111,17 +116,11 @@ constexpr bool is_known_tag =
 // Parameters of CGAL's optimizers that B-ODT has no use for are refused at compile
 // time with the reason, instead of being silently ignored.
 template <class T>
-void set_parameter(Smoothing_options&, cgal_tag::freeze_bound_, const T&)
-{
-  static_assert(Always_false<T>::value,
-                "bodt_optimize_mesh_3 has no freeze_bound: B-ODT does not freeze vertices; a vertex whose move "
-                "is zero or refused is skipped until a neighbour moves, which needs no threshold. Use "
-                "convergence to stop when all moves are small.");
-}
-template <class T>
 void set_parameter(Smoothing_options&, cgal_tag::do_freeze_, const T&)
 {
-  static_assert(Always_false<T>::value, "bodt_optimize_mesh_3 has no do_freeze: B-ODT does not freeze vertices.");
+  static_assert(Always_false<T>::value,
+                "bodt_optimize_mesh_3 has no do_freeze: freezing is on while freeze_bound is above 0; "
+                "freeze_bound = 0 turns it off.");
 }
 template <class T>
 void set_parameter(Smoothing_options&, cgal_tag::sliver_bound_, const T&)
@@ -149,6 +148,7 @@ public:
     return with(CGAL::parameters::tag::max_iteration_number_(), n);
   }
   Optimization_parameters convergence(double c) const { return with(CGAL::parameters::tag::convergence_(), c); }
+  Optimization_parameters freeze_bound(double f) const { return with(CGAL::parameters::tag::freeze_bound_(), f); }
   Optimization_parameters moving_vertices(Moving_vertices m) const { return with(internal::tag::moving_vertices_(), m); }
   Optimization_parameters smoothing_method(Smoothing_method m) const
   {
@@ -182,8 +182,6 @@ public:
   {
     return Optimization_parameters<V>(options_, v);
   }
-  template <class T>
-  Optimization_parameters freeze_bound(const T& v) const { return with(CGAL::parameters::tag::freeze_bound_(), v); }
   template <class T>
   Optimization_parameters sliver_bound(const T& v) const { return with(CGAL::parameters::tag::sliver_bound_(), v); }
 

@@ -192,9 +192,9 @@ public:
 
 private:
   // The sweep order and, per vertex, the vertices whose move depends on it: a
-  // vertex whose last move was zero or refused gets the same verdict again until
-  // a vertex of its star, or the far vertex of one of its hull checks, moves; such
-  // vertices are skipped, which changes no result.
+  // vertex whose last move was zero, frozen or refused gets the same verdict again
+  // until a vertex of its star, or the far vertex of one of its hull checks, moves;
+  // such vertices are skipped, which changes no result.
   void derive()
   {
     const int nv = static_cast<int>(mesh_.number_of_vertices());
@@ -253,6 +253,11 @@ private:
     const bool natural = projection_ && kind == Vertex_kind::surface;
     const Vector X = natural ? Nodt_move()(star) : mover_(star, kind, feature_direction(v, star));
     if(X == CGAL::NULL_VECTOR) return;
+    double volume = 0;
+    for(const auto& c : star.cells) volume += CGAL::determinant(c.a - star.x0, c.b - star.x0, c.c - star.x0);
+    const double size = std::cbrt(volume / 6.0 / static_cast<double>(star.cells.size()));
+    // Frozen: too short a move to be worth its cost; a neighbour's move wakes it.
+    if(X.squared_length() < opt_.freeze_bound * opt_.freeze_bound * size * size) return;
     const double fraction = natural ? guard_.move(v, X, *projection_, w.trial) : guard_.move(v, X, w.trial);
     if(fraction == 0)
     {
@@ -272,9 +277,6 @@ private:
     if(fraction < 1) ++stats.shortened;
     moved_now_[v] = 1;
     cost_[v] = w.trial.cost;
-    double volume = 0;
-    for(const auto& c : star.cells) volume += CGAL::determinant(c.a - star.x0, c.b - star.x0, c.c - star.x0);
-    const double size = std::cbrt(volume / 6.0 / static_cast<double>(star.cells.size()));
     stats.max_relative_move = std::max(stats.max_relative_move, fraction * std::sqrt(X.squared_length()) / size);
   }
 

@@ -1,9 +1,0 @@
-// Must not compile: B-ODT freezes no vertex (test parameters_refused_freeze_bound).
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/bodt_optimize_mesh_3.h>
-int main()
-{
-  CGAL::Delaunay_triangulation_3<CGAL::Exact_predicates_inexact_constructions_kernel> tr;
-  CGAL::bodt_optimize_mesh_3(tr, CGAL::parameters::time_limit = 10, CGAL::parameters::freeze_bound = 0.01);
-}
