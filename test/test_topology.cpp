@@ -566,6 +566,105 @@ TEST(Pipeline, SameInputSameOutput)
   EXPECT_EQ(ma.triangles, mb.triangles);
 }
 
+// What lets the flip pass evaluate a round of cells concurrently and apply their
+// flips one after the other: every cell an evaluation of cell c reads or would
+// replace holds a vertex of c or the apex across one of c's faces (the pass's
+// `neighbourhood`), so an evaluation none of whose neighbourhood a flip touched
+// since is still right. Checked on every proposal of every cell of a Mesh_3
+// mesh with features and two subdomains, each measure, before and after a
+// flipped state; and the whole pipeline gives the same cells on 1, 2 and 4
+// threads with every pass at work (flips, max-min steps, insertion, all phases).
+TEST(Flips, EvaluationsStayWithinTheCellsNeighbourhood)
+{
+  using namespace bodt_inputs;
+  using Adapter = BODT::internal::C3t3_adapter<C3t3>;
+  const Generated_mesh input = make_input(Shape::two_subdomains, Size::small);
+  for(const auto measure : {BODT::Quality_measure::min_dihedral_sine, BODT::Quality_measure::largest_dihedral_angle})
+  {
+    C3t3 c3t3 = input.c3t3;
+    Adapter adapter(c3t3);
+    const BODT::internal::Dihedral_bounds any;   // default: every angle allowed, so more proposals
+    const BODT::internal::Flip_context<Adapter> ctx(adapter, any, false, measure);
+    BODT::internal::Edge_removal<Adapter> edge_removal;
+    BODT::internal::Multi_face_removal<Adapter> face_removal;
+    BODT::internal::Flip<Adapter> flip;
+    std::size_t proposals = 0, improving = 0;
+    auto& tr = c3t3.triangulation();
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+    {
+      std::set<C3t3::Vertex_handle> neighbourhood;
+      for(int k = 0; k < 4; ++k)
+      {
+        neighbourhood.insert(c->vertex(k));
+        neighbourhood.insert(c->neighbor(k)->vertex(c->neighbor(k)->index(c)));
+      }
+      auto check = [&](const char* what) {
+        ++proposals;
+        if(flip.improves()) ++improving;
+        for(const auto& old : flip.old_cells)
+        {
+          bool inside = false;
+          for(int k = 0; k < 4; ++k) inside = inside || neighbourhood.count(old->vertex(k)) > 0;
+          ASSERT_TRUE(inside) << what << " reads a cell with no vertex of the cell's neighbourhood";
+        }
+      };
+      for(int i = 0; i < 4; ++i)
+      {
+        for(int j = i + 1; j < 4; ++j)
+          if(edge_removal(ctx, c, i, j, flip)) check("edge removal");
+        if(!tr.is_infinite(c->neighbor(i)->vertex(c->neighbor(i)->index(c))) && face_removal(ctx, c, i, flip))
+          check("multi-face removal");
+      }
+    }
+    EXPECT_GT(proposals, 1000u);
+    EXPECT_GT(improving, 10u) << "no flip to make: the check would not reach the pass's real cases";
+  }
+}
+
+TEST(Pipeline, SameCellsOnAnyNumberOfThreadsWithEveryPassAtWork)
+{
+  using namespace bodt_inputs;
+  const Generated_mesh input = make_input(Shape::two_subdomains, Size::small);
+  struct Counts
+  {
+    std::size_t flips = 0, max_min = 0, inserted = 0, phases = 0;
+  };
+  struct Counting
+  {
+    Counts* counts;
+    void after_classification(const BODT::Smoothing_result&) {}
+    void after_iteration(const BODT::Iteration_stats& s)
+    {
+      counts->flips += s.topology.total();
+      counts->max_min += s.max_min_moves;
+      counts->inserted += s.insertion.vertices_added;
+      counts->phases = std::max<std::size_t>(counts->phases, static_cast<std::size_t>(s.phase) + 1);
+    }
+  };
+  Tet_mesh reference;
+  for(int threads : {1, 2, 4})
+  {
+    C3t3 c3t3 = input.c3t3;
+    Counts counts;
+    CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::max_iteration_number = 8,
+                               CGAL::parameters::number_of_threads = threads,
+                               CGAL::parameters::progress_visitor = Counting{&counts});
+    EXPECT_GT(counts.flips, 0u);
+    EXPECT_GT(counts.max_min, 0u);
+    EXPECT_GT(counts.inserted, 0u);
+    EXPECT_EQ(counts.phases, 3u);
+    const Tet_mesh m = BODT::c3t3_to_tet_mesh(c3t3);
+    if(threads == 1)
+      reference = m;
+    else
+    {
+      EXPECT_TRUE(m.points == reference.points) << threads << " threads";
+      EXPECT_TRUE(m.tets == reference.tets) << threads << " threads";
+      EXPECT_TRUE(m.triangles == reference.triangles) << threads << " threads";
+    }
+  }
+}
+
 // The largest-angle measure is 1 + the cosine of the largest dihedral angle: it
 // orders tetrahedra by their largest angle, is 0 for a flat one with an angle of
 // 180 degrees, and -1 for a negatively oriented one.

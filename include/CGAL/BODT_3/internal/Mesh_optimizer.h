@@ -368,10 +368,12 @@ private:
 
   // The mesh cells with a vertex of a cell below `threshold`, measured: where the
   // largest-angle phase's flips start. Only there can a flip help a bad cell,
-  // itself or by freeing its vertices for the max-min steps; the pass picks among
-  // them by sine.
+  // itself or by freeing its vertices for the max-min steps. Of those, only the
+  // cells the pass would select by sine (`flip_selection_quality`) are kept: on a
+  // Mesh_3 output the vertices of the cells above the threshold touch most cells.
   void collect_around(double threshold, std::vector<Candidate>& out)
   {
+    const double selected = phase_options_.flips.quality_threshold;
     std::vector<int> bad;
     collect_below(threshold, bad, [](std::size_t c) { return static_cast<int>(c); });
     std::vector<char> near(mesh_.number_of_vertices(), 0);
@@ -380,7 +382,9 @@ private:
     std::vector<std::vector<Candidate>> found(block_count(mesh_.cells.size()));
     for_mesh_cells([&](int b, std::size_t c) {
       const auto& q = mesh_.cells[c];
-      if(near[q[0]] || near[q[1]] || near[q[2]] || near[q[3]]) found[static_cast<std::size_t>(b)].push_back(measure(c));
+      if((near[q[0]] || near[q[1]] || near[q[2]] || near[q[3]]) &&
+         min_dihedral_sine(mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]) < selected)
+        found[static_cast<std::size_t>(b)].push_back(measure(c));
     });
     out.clear();
     for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());
