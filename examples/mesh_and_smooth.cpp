@@ -43,7 +43,7 @@ int main()
       CGAL::bodt_optimize_mesh_3(c3t3, domain, params::max_iteration_number(20).time_limit(60));
   const auto after = CGAL::BODT_3::mesh_quality(c3t3);
 
-  std::cout << "return code " << code << "\n"   // printed by name, e.g. MAX_ITERATION_NUMBER_REACHED
+  std::cout << "return code " << code << "\n"   // printed by name, e.g. CANT_IMPROVE_ANYMORE
             << "min dihedral angle: " << before.min_dihedral_deg << " -> " << after.min_dihedral_deg << " deg\n"
             << "max dihedral angle: " << before.max_dihedral_deg << " -> " << after.max_dihedral_deg << " deg\n"
             << "volume: " << before.volume << " -> " << after.volume << "\n";

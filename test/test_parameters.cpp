@@ -205,10 +205,10 @@ TEST(Parameters, ZeroIterationsTerminates)
 {
   Delaunay unguarded = random_ball(200), guarded = random_ball(200);
   int classifications = 0, iterations = 0;
-  // A convergence no run reaches: the cap ends it.
+  // A convergence no run reaches, and no vertex frozen: the cap ends it.
   const auto code = CGAL::bodt_optimize_mesh_3(
-      unguarded, params::max_iteration_number(0).convergence(1e-300).quality_guard(false).largest_angle_phase(false)
-                     .progress_visitor(Counting_visitor{&classifications, &iterations}));
+      unguarded, params::max_iteration_number(0).convergence(1e-300).freeze_bound(0).quality_guard(false)
+                     .largest_angle_phase(false).progress_visitor(Counting_visitor{&classifications, &iterations}));
   EXPECT_EQ(iterations, 1000);
   EXPECT_EQ(code, CGAL::MAX_ITERATION_NUMBER_REACHED);
   iterations = 0;
