@@ -4,11 +4,12 @@
 #
 # usage: scripts/sanitize.sh [--all] [ctest arguments...]   e.g. scripts/sanitize.sh --all -R Smoothing
 #   (default)  the tests that mesh nothing with Mesh_3 (ctest label `light`: readers and
-#              writers, classification, moves, the shape of labelled boxes, parameters,
-#              reports); CI runs neither set (doc/manual.md, section 4)
+#              writers, quality, utilities, classification, moves, the smoothing steps,
+#              flips on constructed configurations, the shape of labelled boxes,
+#              parameters, reports); CI runs neither set (doc/manual.md, section 4)
 #   --all      every test that runs the package's code (labels `light` and `mesh_3`: also
-#              the pipeline on the Mesh_3-generated inputs, the conversions, the topology,
-#              insertion, the command line and the example)
+#              the pipeline on the Mesh_3-generated inputs, the conversions, the flips
+#              through the pipeline, insertion, the command line and the example)
 # Left out either way: the compile checks (parameters_refused_*), the package's CMake
 # check (user_project) and the Python test, which run compilers, CMake and Python on
 # code the other tests run; the Python module is not built with the sanitizers.

@@ -2,14 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Checks shared by the tests that change the connectivity of a C3T3 built from a
-// Tet_mesh (flips, insertion).
+// Tet_mesh (flips, insertion, local smoothing).
 #ifndef BODT_TEST_C3T3_CHECKS_H
 #define BODT_TEST_C3T3_CHECKS_H
+
+#include "exact_volumes.h"
 
 #include <CGAL/BODT_3/Tet_mesh_conversion.h>
 #include <CGAL/BODT_3/internal/Utilities/bare_point.h>
 
 #include <gtest/gtest.h>
+
+#include <map>
 
 namespace bodt_test {
 
@@ -46,6 +50,16 @@ inline void expect_valid(const File_c3t3& c3t3)
   EXPECT_EQ(bad, 0u);
   EXPECT_EQ(in_complex, c3t3.number_of_cells_in_complex());
   EXPECT_EQ(facets, 2 * c3t3.number_of_facets_in_complex());
+}
+
+// Every subdomain's volume, exactly, from the cells of the complex.
+inline std::map<int, Exact> exact_subdomain_volumes(const File_c3t3& c3t3)
+{
+  std::map<int, Exact> v;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    v[c3t3.subdomain_index(c)] += exact_det(bare(c3t3, c->vertex(0)), bare(c3t3, c->vertex(1)), bare(c3t3, c->vertex(2)),
+                                            bare(c3t3, c->vertex(3))) / 6;
+  return v;
 }
 
 } // namespace bodt_test

@@ -4,7 +4,7 @@
 // Side-by-side comparison of smoothing methods (ours and CGAL's) on the same
 // inputs, in the same run: the inputs, the table of methods, the measurements,
 // and the reports (Markdown, JSON, SVG histograms). Used by bench/compare.cpp,
-// `bodt compare` and test/test_compare.cpp.
+// `bodt compare` and test/cli/compare.cpp.
 #ifndef BODT_COMPARE_COMPARE_H
 #define BODT_COMPARE_COMPARE_H
 

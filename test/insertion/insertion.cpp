@@ -107,7 +107,7 @@ Tet_mesh bipyramid()
 
 } // namespace
 
-TEST(Bad_tet_shapes, EachShapeOnAConstructedTetrahedron)
+TEST(BadTetShape, EachShapeOnAConstructedTetrahedron)
 {
   // Good: the regular tetrahedron.
   EXPECT_EQ(shape_of(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)), CGAL::BODT_3::internal::Bad_tet_shape::good);
@@ -134,7 +134,7 @@ TEST(Bad_tet_shapes, EachShapeOnAConstructedTetrahedron)
             CGAL::BODT_3::internal::Bad_tet_shape::sliver);
 }
 
-TEST(Bad_tet_shapes, WhereToSplit)
+TEST(BadTetShape, WhereToSplit)
 {
   BODT::Bad_tet_options opt;
   opt.small_angle = 30;
@@ -323,10 +323,10 @@ TEST(Splits, AnInvertingPointIsRefused)
 // The pipeline with insertion over CGAL-meshed inputs: within the budget, every
 // subdomain's volume kept, no inverted cell, a valid complex, corners where they
 // were, curve edges forming the same curves, and better than the input.
-class Insertion_pipeline : public ::testing::TestWithParam<bodt_inputs::Shape>
+class InsertionPipeline : public ::testing::TestWithParam<bodt_inputs::Shape>
 {};
 
-TEST_P(Insertion_pipeline, KeepsLabelsVolumesAndValidity)
+TEST_P(InsertionPipeline, KeepsLabelsVolumesAndValidity)
 {
   using namespace bodt_inputs;
   const Generated_mesh input = make_input(GetParam(), Size::small);
@@ -373,13 +373,13 @@ TEST_P(Insertion_pipeline, KeepsLabelsVolumesAndValidity)
   EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg);
 }
 
-INSTANTIATE_TEST_SUITE_P(All, Insertion_pipeline, ::testing::ValuesIn(bodt_inputs::all_shapes()),
+INSTANTIATE_TEST_SUITE_P(All, InsertionPipeline, ::testing::ValuesIn(bodt_inputs::all_shapes()),
                          [](const ::testing::TestParamInfo<bodt_inputs::Shape>& info) {
                            return bodt_inputs::name(info.param);
                          });
 
 // The budget caps the vertices added; 0 adds none.
-TEST(Insertion_budget, CapsTheVerticesAdded)
+TEST(InsertionBudget, CapsTheVerticesAdded)
 {
   using namespace bodt_inputs;
   const Generated_mesh input = make_input(Shape::genus2, Size::small);

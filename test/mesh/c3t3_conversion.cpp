@@ -195,12 +195,12 @@ std::map<std::array<int, 3>, int> oriented_triangles(const Tet_mesh& m)
   return out;
 }
 
-class Round_trip : public ::testing::TestWithParam<Shape>
+class RoundTrip : public ::testing::TestWithParam<Shape>
 {};
 
 } // namespace
 
-TEST_P(Round_trip, KeepsPointsCellsFacetsEdgesCornersAndDimensions)
+TEST_P(RoundTrip, KeepsPointsCellsFacetsEdgesCornersAndDimensions)
 {
   const Generated_mesh input = make_input(GetParam(), Size::small);
   const C3t3& c0 = input.c3t3;
@@ -315,10 +315,10 @@ TEST_P(Round_trip, KeepsPointsCellsFacetsEdgesCornersAndDimensions)
   EXPECT_EQ(std::set<int>(m2.corners.begin(), m2.corners.end()), std::set<int>(m1.corners.begin(), m1.corners.end()));
 }
 
-INSTANTIATE_TEST_SUITE_P(All, Round_trip, ::testing::ValuesIn(all_shapes()),
+INSTANTIATE_TEST_SUITE_P(All, RoundTrip, ::testing::ValuesIn(all_shapes()),
                          [](const ::testing::TestParamInfo<Shape>& info) { return name(info.param); });
 
-TEST(C3t3_conversion, TwoSubdomainsKeepBothLabelsAndTheirVolumes)
+TEST(C3t3Conversion, TwoSubdomainsKeepBothLabelsAndTheirVolumes)
 {
   const Generated_mesh input = make_input(Shape::two_subdomains, Size::small);
   const Tet_mesh m = BODT::c3t3_to_tet_mesh(input.c3t3);
@@ -340,7 +340,7 @@ TEST(C3t3_conversion, TwoSubdomainsKeepBothLabelsAndTheirVolumes)
     EXPECT_NEAR(v1.at(kv.first), kv.second, 1e-12 * kv.second);
 }
 
-TEST(C3t3_conversion, SmoothingAConvertedMeshKeepsTheVolumePerSubdomain)
+TEST(C3t3Conversion, SmoothingAConvertedMeshKeepsTheVolumePerSubdomain)
 {
   for(Shape shape : {Shape::two_subdomains, Shape::sharp_part})
   {
@@ -372,7 +372,7 @@ TEST(C3t3_conversion, SmoothingAConvertedMeshKeepsTheVolumePerSubdomain)
 // facets of their interface z = 0 kept): the surface stays where it was (its
 // vertices in place, the same area covered), the complex stays valid, the volume
 // is kept. Before the fix its vertices moved as interior vertices, by up to 0.1.
-TEST(C3t3_conversion, EmbeddedFacetsOfAC3t3StayOnTheirSurface)
+TEST(C3t3Conversion, EmbeddedFacetsOfAC3t3StayOnTheirSurface)
 {
   Generated_mesh input = make_input(Shape::two_subdomains, Size::small);
   C3t3& c = input.c3t3;
@@ -464,7 +464,7 @@ std::string conversion_error(const Tet_mesh& m)
 
 } // namespace
 
-TEST(C3t3_conversion, OutsideTetrahedraStayInTheTriangulationOnly)
+TEST(C3t3Conversion, OutsideTetrahedraStayInTheTriangulationOnly)
 {
   const Tet_mesh m = two_tets_and_outside();
   C3t3 c;
@@ -494,7 +494,7 @@ TEST(C3t3_conversion, OutsideTetrahedraStayInTheTriangulationOnly)
   EXPECT_EQ(back.corners.size(), 2u);
 }
 
-TEST(C3t3_conversion, AllLabelsZeroMakeOneSubdomain)
+TEST(C3t3Conversion, AllLabelsZeroMakeOneSubdomain)
 {
   Tet_mesh m = two_tets_and_outside();
   m.tet_labels = {0, 0, 0};
@@ -506,7 +506,7 @@ TEST(C3t3_conversion, AllLabelsZeroMakeOneSubdomain)
   EXPECT_EQ(c.number_of_facets_in_complex(), 8u);
 }
 
-TEST(C3t3_conversion, IntegralPatchIndicesKeepTheFileLabels)
+TEST(C3t3Conversion, IntegralPatchIndicesKeepTheFileLabels)
 {
   const Tet_mesh m = two_tets_and_outside();
   Int_c3t3 c;
@@ -550,7 +550,7 @@ TEST(C3t3_conversion, IntegralPatchIndicesKeepTheFileLabels)
   EXPECT_EQ(std::set<int>(back.edge_labels.begin(), back.edge_labels.end()), (std::set<int>{4, 5}));
 }
 
-TEST(C3t3_conversion, MeshesNoTriangulationCanHoldThrow)
+TEST(C3t3Conversion, MeshesNoTriangulationCanHoldThrow)
 {
   const std::vector<Point> pts = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1),
                                   Point(0, 0, -1), Point(1, 1, -1), Point(-1, -1, -1), Point(1, 1, 1),
@@ -596,7 +596,7 @@ TEST(C3t3_conversion, MeshesNoTriangulationCanHoldThrow)
 
 // The conversion checks and links its cells in parallel: the same complex on any
 // number of threads, and the first bad cell in file order reported.
-TEST(C3t3_conversion, SameComplexAndSameRefusalOnAnyNumberOfThreads)
+TEST(C3t3Conversion, SameComplexAndSameRefusalOnAnyNumberOfThreads)
 {
   const Tet_mesh grid = bodt_test::cube_grid(16, [](int i, int, int) { return i < 8 ? 1 : 2; });
   auto convert = [](const Tet_mesh& m, int threads, BODT::Tet_mesh_c3t3& c) {
@@ -628,7 +628,7 @@ TEST(C3t3_conversion, SameComplexAndSameRefusalOnAnyNumberOfThreads)
   }
 }
 
-TEST(C3t3_conversion, SeveralBoundaryComponentsAreAccepted)
+TEST(C3t3Conversion, SeveralBoundaryComponentsAreAccepted)
 {
   // Two separate tetrahedra: the infinite vertex's star has two parts, as with
   // CGAL::IO::read_MEDIT; everything else is valid.
@@ -646,7 +646,7 @@ TEST(C3t3_conversion, SeveralBoundaryComponentsAreAccepted)
   for(auto cell = tds.cells_begin(); cell != tds.cells_end(); ++cell) EXPECT_TRUE(tds.is_valid(cell));
 }
 
-TEST(C3t3_conversion, SharedMeshes)
+TEST(C3t3Conversion, SharedMeshes)
 {
   const std::filesystem::path dir(BODT_SHARED_DATA);
   if(!std::filesystem::exists(dir)) GTEST_SKIP() << "no " << dir;
@@ -709,7 +709,7 @@ TEST(C3t3_conversion, SharedMeshes)
 // `.ele` file, which holds the tetrahedra). The readers accept these files: only
 // the conversion can refuse them. A mesh made in code has no file, and its message
 // is the refusal alone.
-TEST(C3t3_conversion, EveryRefusalNamesTheFile)
+TEST(C3t3Conversion, EveryRefusalNamesTheFile)
 {
   Tet_mesh same_side;
   same_side.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(0.2, 0.2, 2)};

@@ -1,18 +1,16 @@
 // Quality measures: dihedral angles against CGAL's independent
 // approximate_dihedral_angle, counts, volumes, exact inversion test, and the
-// real meshes of ../shared/data when present.
+// real meshes of ../shared/data when present; the measures the flips and the
+// guards use (tet_quality.h) against a brute-force computation, and the bounds
+// on the extreme angles.
+#include "delaunay_cells.h"
 #include "report/json_report.h"
 
-#include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
-#include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
-#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
-#include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
 #include <CGAL/BODT_3/IO/medit.h>
 #include <CGAL/BODT_3/mesh_quality.h>
-#include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
+#include <CGAL/BODT_3/internal/Quality/dihedral_angles.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
 
-#include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -26,12 +24,26 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <random>
 #include <sstream>
+#include <vector>
 
+namespace BODT = CGAL::BODT_3;
 using CGAL::BODT_3::Tet_mesh;
 using Point = Tet_mesh::Point;
+using bodt_test::Delaunay_cells;
 
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The minimum sine of the six dihedral angles, from the angles themselves.
+double brute_min_sine(const Point& a, const Point& b, const Point& c, const Point& d)
+{
+  double q = 2;
+  for(double deg : BODT::internal::dihedral_angles(a, b, c, d)) q = std::min(q, std::sin(deg * kPi / 180));
+  return q;
+}
 
 // Dihedral angle at edge (a, b) of tetrahedron (a, b, c, d), from CGAL.
 double cgal_angle(const Point& a, const Point& b, const Point& c, const Point& d)
@@ -244,192 +256,6 @@ TEST(MeshQuality, RealMeshesAgreeWithIndependentComputation)
   EXPECT_GE(checked, 1);
 }
 
-// The flat view's handle index: every inserted handle found with its index, the
-// others not, duplicates refused, through several rehashes.
-TEST(Handle_index_map, FindsWhatWasInsertedThroughGrowth)
-{
-  std::vector<int> storage(5000), others(100);
-  CGAL::BODT_3::internal::Handle_index_map<int*> map;
-  map.reset(0);
-  for(std::size_t i = 0; i < storage.size(); ++i) EXPECT_TRUE(map.insert(&storage[i], static_cast<int>(i)));
-  EXPECT_FALSE(map.insert(&storage[7], 99));
-  EXPECT_EQ(map.size(), storage.size());
-  for(std::size_t i = 0; i < storage.size(); ++i) ASSERT_EQ(map.find(&storage[i]), static_cast<int>(i));
-  for(int& x : others) EXPECT_EQ(map.find(&x), -1);
-  map.reset(10);
-  EXPECT_EQ(map.find(&storage[0]), -1);
-  EXPECT_EQ(map.size(), 0u);
-}
-
-// Handles inserted from several threads at once are found with their index.
-TEST(Handle_index_map, InsertAllFromThreadsFindsEveryHandle)
-{
-  std::vector<int> storage(50000), others(100);
-  std::vector<int*> handles;
-  for(int& x : storage) handles.push_back(&x);
-  for(int threads : {1, 2, 4})
-  {
-    CGAL::BODT_3::internal::Handle_index_map<int*> map;
-    map.reset(handles.size() / 4);   // grows before the threads insert
-    CGAL::BODT_3::internal::Thread_workers<char> workers(threads);
-    map.insert_all(handles, workers);
-    EXPECT_EQ(map.size(), handles.size());
-    for(std::size_t i = 0; i < handles.size(); ++i) ASSERT_EQ(map.find(handles[i]), static_cast<int>(i));
-    for(int& x : others) EXPECT_EQ(map.find(&x), -1);
-    EXPECT_FALSE(map.insert(handles[9], 1));
-  }
-}
-
-// The flip pass's map from vertex-id tuples: the same answers as std::map over
-// random inserts and updates (keys that differ only in order are different),
-// through several rehashes, and after clear.
-TEST(Id_tuple_map, AgreesWithStdMapThroughGrowth)
-{
-  CGAL::Random random(11);
-  CGAL::BODT_3::internal::Id_tuple_map<4, int> map;
-  std::map<std::array<int, 4>, int> reference;
-  auto key = [&] {
-    return std::array<int, 4>{random.get_int(0, 40), random.get_int(0, 40), random.get_int(0, 40), random.get_int(0, 40)};
-  };
-  EXPECT_EQ(map.find(key()), nullptr);
-  for(int i = 0; i < 20000; ++i)
-  {
-    const auto k = key();
-    if(i % 3 == 0)
-    {
-      map.assign(k, i);
-      reference[k] = i;
-    }
-    else
-    {
-      bool inserted = false;
-      int& value = map.find_or_insert(k, -i, inserted);
-      const auto ins = reference.emplace(k, -i);
-      ASSERT_EQ(inserted, ins.second);
-      ASSERT_EQ(value, ins.first->second);
-      if(!inserted) value = reference[k] = value + 1;
-    }
-  }
-  EXPECT_EQ(map.size(), reference.size());
-  for(const auto& kv : reference)
-  {
-    const int* found = map.find(kv.first);
-    ASSERT_NE(found, nullptr);
-    ASSERT_EQ(*found, kv.second);
-  }
-  for(int i = 0; i < 1000; ++i)
-  {
-    const auto k = key();
-    const int* found = map.find(k);
-    EXPECT_EQ(found != nullptr, reference.count(k) == 1);
-  }
-  map.clear();
-  EXPECT_EQ(map.size(), 0u);
-  EXPECT_EQ(map.find(reference.begin()->first), nullptr);
-}
-
-// The parallel counting sort groups like a sequential stable one, on any number of threads.
-TEST(GroupByKey, StableGroupsOnAnyNumberOfThreads)
-{
-  CGAL::Random random(3);
-  const std::size_t items = 100000, keys = 5000;
-  std::vector<std::array<int, 3>> item_keys(items);
-  for(auto& k : item_keys)
-    for(int& x : k) x = random.get_int(0, static_cast<int>(keys));
-  // Item i emits (k, 3 i + j) for its j-th key k.
-  auto each = [&](std::size_t i, const auto& emit) {
-    for(int j = 0; j < 3; ++j) emit(static_cast<std::size_t>(item_keys[i][j]), static_cast<long>(3 * i + j));
-  };
-  std::vector<std::vector<long>> expected(keys);
-  for(std::size_t i = 0; i < items; ++i)
-    for(int j = 0; j < 3; ++j) expected[item_keys[i][j]].push_back(static_cast<long>(3 * i + j));
-  for(int threads : {1, 2, 4, 16})
-  {
-    std::vector<int> begin;
-    std::vector<long> values;
-    CGAL::BODT_3::internal::group_by_key<long>(items, keys, threads, each, begin, values);
-    ASSERT_EQ(begin.size(), keys + 1);
-    ASSERT_EQ(values.size(), 3 * items);
-    for(std::size_t k = 0; k < keys; ++k)
-      ASSERT_EQ(std::vector<long>(values.begin() + begin[k], values.begin() + begin[k + 1]), expected[k])
-          << "key " << k << ", " << threads << " threads";
-  }
-}
-
-namespace {
-
-// The finite cells of a Delaunay triangulation of `n` random points in the unit
-// cube, as index arrays, with the TDS's own adjacency to compare against.
-struct Delaunay_cells
-{
-  std::vector<Point> points;
-  std::vector<std::array<int, 4>> cells;
-  std::vector<int> neighbor;   // 4 c + i: the finite cell across, or -1
-
-  explicit Delaunay_cells(int n)
-  {
-    using Dt = CGAL::Delaunay_triangulation_3<CGAL::Epick>;
-    CGAL::Random random(7);
-    std::vector<Point> in;
-    for(int i = 0; i < n; ++i) in.emplace_back(random.get_double(), random.get_double(), random.get_double());
-    Dt dt(in.begin(), in.end());
-    std::map<Dt::Vertex_handle, int> vid;
-    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
-    {
-      vid[v] = static_cast<int>(points.size());
-      points.push_back(v->point());
-    }
-    std::map<Dt::Cell_handle, int> cid;
-    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-    {
-      cid[c] = static_cast<int>(cells.size());
-      cells.push_back({vid[c->vertex(0)], vid[c->vertex(1)], vid[c->vertex(2)], vid[c->vertex(3)]});
-    }
-    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-      for(int i = 0; i < 4; ++i)
-        neighbor.push_back(dt.is_infinite(c->neighbor(i)) ? -1 : cid[c->neighbor(i)]);
-  }
-};
-
-} // namespace
-
-// Face matching without hashing finds exactly the triangulation's adjacency, the
-// matched face has the same three vertices, and the result does not depend on the
-// number of threads.
-TEST(Tet_face_matching, FindsTheTriangulationsAdjacencyOnAnyNumberOfThreads)
-{
-  const Delaunay_cells d(3000);
-  const CGAL::BODT_3::internal::Tet_face_matching one(d.cells, d.points.size(), 1);
-  EXPECT_EQ(one.crowded_face, -1);
-  ASSERT_EQ(one.match.size(), 4 * d.cells.size());
-  for(std::size_t f = 0; f < one.match.size(); ++f)
-  {
-    const int m = one.match[f];
-    ASSERT_EQ(m < 0 ? -1 : m / 4, d.neighbor[f]) << "face " << f;
-    if(m < 0) continue;
-    EXPECT_EQ(one.match[static_cast<std::size_t>(m)], static_cast<int>(f));
-    // The far vertices differ; the three others are shared.
-    const auto& a = d.cells[f / 4];
-    const auto& b = d.cells[static_cast<std::size_t>(m / 4)];
-    EXPECT_EQ(std::count(b.begin(), b.end(), a[f % 4]), 0);
-    for(int k = 1; k < 4; ++k) EXPECT_EQ(std::count(b.begin(), b.end(), a[(f % 4 + k) % 4]), 1);
-  }
-  for(int threads : {2, 4})
-    EXPECT_EQ(CGAL::BODT_3::internal::Tet_face_matching(d.cells, d.points.size(), threads).match, one.match);
-}
-
-// Three tetrahedra on one face: none of the three is matched, and the first face
-// (by id) of the crowd is reported; a tetrahedron using a vertex twice is skipped.
-TEST(Tet_face_matching, ReportsACrowdedFaceAndSurvivesABrokenCell)
-{
-  const std::vector<std::array<int, 4>> cells = {{0, 1, 2, 3}, {5, 6, 7, 8}, {1, 0, 2, 4}, {0, 1, 2, 5}, {6, 6, 7, 8}};
-  const CGAL::BODT_3::internal::Tet_face_matching faces(cells, 9);
-  EXPECT_EQ(faces.crowded_face, 3);   // cell 0, face opposite vertex 3: (0 1 2)
-  EXPECT_EQ(faces.match[3], -1);
-  EXPECT_EQ(faces.match[4 * 2 + 3], -1);
-  EXPECT_EQ(faces.match[4 * 3 + 3], -1);
-}
-
 // The quality of a Tet_mesh is measured in blocks merged in order: the same report,
 // bit for bit, on any number of threads, and the two subdomains' volumes add up.
 TEST(MeshQuality, SameReportOnAnyNumberOfThreads)
@@ -457,4 +283,116 @@ TEST(MeshQuality, SameReportOnAnyNumberOfThreads)
   }
   EXPECT_NEAR(one.volume_per_subdomain.at(1) + one.volume_per_subdomain.at(2), one.volume, 1e-12);
   EXPECT_GT(one.bad_tets_interior + one.bad_tets_touching_boundary, 0u);   // random points: bad tets everywhere
+}
+
+TEST(QualityMeasure, MatchesTheSinesOfTheDihedralAngles)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int checked = 0;
+  for(int i = 0; i < 2000; ++i)
+  {
+    Point p[4];
+    for(auto& x : p) x = Point(u(rng), u(rng), u(rng));
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) std::swap(p[2], p[3]);
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) continue;
+    EXPECT_NEAR(BODT::internal::min_dihedral_sine(p[0], p[1], p[2], p[3]), brute_min_sine(p[0], p[1], p[2], p[3]), 1e-9);
+    // Negatively oriented: -1, whatever the shape.
+    EXPECT_EQ(BODT::internal::min_dihedral_sine(p[0], p[1], p[3], p[2]), -1);
+    ++checked;
+  }
+  EXPECT_GT(checked, 1900);
+  Point r[4] = {Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1)};
+  if(CGAL::orientation(r[0], r[1], r[2], r[3]) != CGAL::POSITIVE) std::swap(r[2], r[3]);
+  EXPECT_NEAR(BODT::internal::min_dihedral_sine(r[0], r[1], r[2], r[3]), std::sqrt(8.0) / 3, 1e-15);
+  // A flat tetrahedron has quality 0 or is refused.
+  EXPECT_LE(BODT::internal::min_dihedral_sine(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0)), 0);
+}
+
+TEST(QualityMeasure, BoundsAgreeWithTheAngles)
+{
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  BODT::internal::Dihedral_bounds bounds = BODT::internal::Dihedral_bounds::empty();
+  // Bounds from a few tets, then every tet is inside iff its angles are.
+  std::vector<std::array<Point, 4>> tets;
+  while(tets.size() < 300)
+  {
+    std::array<Point, 4> p;
+    for(auto& x : p) x = Point(u(rng), u(rng), u(rng));
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) std::swap(p[2], p[3]);
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) == CGAL::POSITIVE) tets.push_back(p);
+  }
+  double lo = 180, hi = 0;
+  for(std::size_t i = 0; i < 20; ++i)
+  {
+    bounds.include(tets[i][0], tets[i][1], tets[i][2], tets[i][3]);
+    const auto mm = BODT::internal::min_max_dihedral_angle(tets[i][0], tets[i][1], tets[i][2], tets[i][3]);
+    lo = std::min(lo, mm.first);
+    hi = std::max(hi, mm.second);
+  }
+  int inside = 0;
+  for(const auto& t : tets)
+  {
+    const auto mm = BODT::internal::min_max_dihedral_angle(t[0], t[1], t[2], t[3]);
+    const bool expected = mm.first >= lo - 1e-9 && mm.second <= hi + 1e-9;
+    const bool clearly = mm.first >= lo + 1e-9 && mm.second <= hi - 1e-9;
+    const bool got = bounds.contains(t[0], t[1], t[2], t[3], BODT::internal::min_dihedral_sine(t[0], t[1], t[2], t[3]));
+    if(clearly)
+    {
+      EXPECT_TRUE(got);
+    }
+    if(!expected)
+    {
+      EXPECT_FALSE(got);
+    }
+    inside += got ? 1 : 0;
+  }
+  EXPECT_GT(inside, 20);
+  EXPECT_LT(inside, 300);
+}
+
+TEST(QualityMeasure, WorstFirstComparison)
+{
+  std::vector<double> a = {0.5, 0.1, 0.9}, b = {0.2, 0.1};
+  EXPECT_EQ(BODT::internal::compare_worst_first(a, b), 1);   // 0.1 ties, then 0.5 > 0.2
+  std::vector<double> c = {0.3}, d = {0.4, 0.9};
+  EXPECT_EQ(BODT::internal::compare_worst_first(c, d), -1);
+  std::vector<double> e = {0.3, 0.8}, f = {0.3};
+  EXPECT_EQ(BODT::internal::compare_worst_first(e, f), 0);
+}
+
+// The largest-angle measure is 1 + the cosine of the largest dihedral angle: it
+// orders tetrahedra by their largest angle, is 0 for a flat one with an angle of
+// 180 degrees, and -1 for a negatively oriented one.
+TEST(QualityMeasure, LargestAngleMeasureOrdersByTheLargestAngle)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<std::pair<double, double>> measured;   // (largest angle, measure)
+  while(measured.size() < 1000)
+  {
+    Point p[4];
+    for(auto& x : p) x = Point(u(rng), u(rng), u(rng));
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) std::swap(p[2], p[3]);
+    if(CGAL::orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) continue;
+    const double q = BODT::internal::tet_quality(BODT::Quality_measure::largest_dihedral_angle, p[0], p[1], p[2], p[3]);
+    const double largest = BODT::internal::min_max_dihedral_angle(p[0], p[1], p[2], p[3]).second;
+    EXPECT_NEAR(q, 1 + std::cos(largest * 3.14159265358979323846 / 180), 1e-9);
+    EXPECT_EQ(BODT::internal::tet_quality(BODT::Quality_measure::largest_dihedral_angle, p[0], p[1], p[3], p[2]), -1);
+    measured.emplace_back(largest, q);
+  }
+  std::sort(measured.begin(), measured.end());
+  for(std::size_t i = 1; i < measured.size(); ++i)
+  {
+    if(measured[i].first > measured[i - 1].first + 1e-6)
+    {
+      EXPECT_LT(measured[i].second, measured[i - 1].second);
+    }
+  }
+  // A flat tetrahedron, its fourth vertex just above the opposite face: angles near 180 degrees.
+  const double flat = BODT::internal::tet_quality(BODT::Quality_measure::largest_dihedral_angle, Point(0, 0, 0), Point(2, 0, 0),
+                                        Point(0, 2, 0), Point(0.5, 0.5, 1e-9));
+  EXPECT_GE(flat, 0);
+  EXPECT_LT(flat, 1e-6);
 }

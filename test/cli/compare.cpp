@@ -16,7 +16,7 @@ namespace {
 
 using namespace bodt_compare;
 
-class Compare_test : public ::testing::Test
+class CompareReport : public ::testing::Test
 {
 protected:
   static void SetUpTestSuite()
@@ -30,9 +30,9 @@ protected:
   static Input_result* result_;
 };
 
-Input_result* Compare_test::result_ = nullptr;
+Input_result* CompareReport::result_ = nullptr;
 
-TEST_F(Compare_test, EveryMethodHasAMeasuredRow)
+TEST_F(CompareReport, EveryMethodHasAMeasuredRow)
 {
   const Input_result& r = *result_;
   ASSERT_EQ(r.rows.size(), methods().size());
@@ -77,7 +77,7 @@ TEST_F(Compare_test, EveryMethodHasAMeasuredRow)
   }
 }
 
-TEST_F(Compare_test, TheOriginalIsUnchanged)
+TEST_F(CompareReport, TheOriginalIsUnchanged)
 {
   const Measurement* original = result_->row(original_name);
   ASSERT_NE(original, nullptr);
@@ -86,7 +86,7 @@ TEST_F(Compare_test, TheOriginalIsUnchanged)
   EXPECT_LT(original->relative_hausdorff, 1e-12);
 }
 
-TEST_F(Compare_test, ReportsNameEveryMethod)
+TEST_F(CompareReport, ReportsNameEveryMethod)
 {
   Comparison c;
   c.command = "test_compare";
@@ -111,7 +111,7 @@ TEST_F(Compare_test, ReportsNameEveryMethod)
 // The rebuilt Random Sphere is a complex built from a Tet_mesh (tet_mesh_to_c3t3),
 // not by Mesh_3: CGAL's Lloyd crashed on it while its facets had no surface centers.
 // The perturber is left out: it takes minutes on this input (the benchmark runs it).
-TEST(Compare_on_converted_complex, CgalOptimizersRunOnTheRebuiltRandomSphere)
+TEST(CompareOnConvertedComplex, CgalOptimizersRunOnTheRebuiltRandomSphere)
 {
   Input input{"random_sphere", "the rebuilt Random Sphere", bodt_inputs::make_paper_random_sphere()};
   std::vector<Method> cgal;

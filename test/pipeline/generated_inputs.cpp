@@ -216,11 +216,11 @@ Mesh_signature signature(const C3t3& c3t3)
   return s;
 }
 
-class Generated_input : public ::testing::TestWithParam<Shape>
+class GeneratedInput : public ::testing::TestWithParam<Shape>
 {
 };
 
-TEST_P(Generated_input, SmallSizeHasAFewThousandCells)
+TEST_P(GeneratedInput, SmallSizeHasAFewThousandCells)
 {
   const Generated_mesh mesh = make_input(GetParam(), Size::small);
   EXPECT_EQ(mesh.name, name(GetParam()));
@@ -229,7 +229,7 @@ TEST_P(Generated_input, SmallSizeHasAFewThousandCells)
   EXPECT_LE(mesh.c3t3.number_of_cells_in_complex(), 6000u);
 }
 
-TEST_P(Generated_input, CellsArePositivelyOriented)
+TEST_P(GeneratedInput, CellsArePositivelyOriented)
 {
   const Generated_mesh mesh = make_input(GetParam(), Size::small);
   std::size_t bad = 0;
@@ -242,7 +242,7 @@ TEST_P(Generated_input, CellsArePositivelyOriented)
   EXPECT_EQ(bad, 0u);
 }
 
-TEST_P(Generated_input, BoundaryIsAClosedSurfaceOfTheExpectedTopology)
+TEST_P(GeneratedInput, BoundaryIsAClosedSurfaceOfTheExpectedTopology)
 {
   const Generated_mesh mesh = make_input(GetParam(), Size::small);
   const std::vector<Triangle> facets = boundary_facets(mesh.c3t3);
@@ -253,7 +253,7 @@ TEST_P(Generated_input, BoundaryIsAClosedSurfaceOfTheExpectedTopology)
   EXPECT_EQ(t.euler_characteristic, expected_euler_characteristic(GetParam()));
 }
 
-TEST_P(Generated_input, VolumeIsCloseToTheDomainVolume)
+TEST_P(GeneratedInput, VolumeIsCloseToTheDomainVolume)
 {
   const Shape shape = GetParam();
   const Generated_mesh mesh = make_input(shape, Size::small);
@@ -280,7 +280,7 @@ TEST_P(Generated_input, VolumeIsCloseToTheDomainVolume)
   }
 }
 
-TEST_P(Generated_input, SameCallGivesTheSameMesh)
+TEST_P(GeneratedInput, SameCallGivesTheSameMesh)
 {
   const Generated_mesh first = make_input(GetParam(), Size::small);
   const Generated_mesh second = make_input(GetParam(), Size::small);
@@ -289,7 +289,7 @@ TEST_P(Generated_input, SameCallGivesTheSameMesh)
   EXPECT_TRUE(a == b);
 }
 
-TEST_P(Generated_input, FeatureVerticesLieOnTheFeaturePolylines)
+TEST_P(GeneratedInput, FeatureVerticesLieOnTheFeaturePolylines)
 {
   const Shape shape = GetParam();
   const Generated_mesh mesh = make_input(shape, Size::small);
@@ -322,10 +322,10 @@ TEST_P(Generated_input, FeatureVerticesLieOnTheFeaturePolylines)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(All, Generated_input, ::testing::ValuesIn(all_shapes()),
+INSTANTIATE_TEST_SUITE_P(All, GeneratedInput, ::testing::ValuesIn(all_shapes()),
                          [](const ::testing::TestParamInfo<Shape>& info) { return name(info.param); });
 
-TEST(Generated_inputs, NamesAreDistinct)
+TEST(GeneratedInputs, NamesAreDistinct)
 {
   std::set<std::string> names;
   for(Shape shape : all_shapes())
@@ -333,7 +333,7 @@ TEST(Generated_inputs, NamesAreDistinct)
   EXPECT_EQ(names.size(), 5u);
 }
 
-TEST(Generated_inputs, SharpPartPolylinesAreTheEdgesOfThePolyhedron)
+TEST(GeneratedInputs, SharpPartPolylinesAreTheEdgesOfThePolyhedron)
 {
   // A prism over a 7-gon: 21 edges, 14 corners, each corner on 3 edges.
   const std::vector<Polyline> polylines = feature_polylines(Shape::sharp_part);
@@ -350,7 +350,7 @@ TEST(Generated_inputs, SharpPartPolylinesAreTheEdgesOfThePolyhedron)
     EXPECT_EQ(ce.second, 3) << ce.first;
 }
 
-TEST(Generated_inputs, SharpPartCornersAreMeshVertices)
+TEST(GeneratedInputs, SharpPartCornersAreMeshVertices)
 {
   const Generated_mesh mesh = make_input(Shape::sharp_part, Size::small);
   const Tr& tr = mesh.c3t3.triangulation();
@@ -361,7 +361,7 @@ TEST(Generated_inputs, SharpPartCornersAreMeshVertices)
   EXPECT_EQ(corners.size(), 14u);
 }
 
-TEST(Generated_inputs, TwoSubdomainsHaveBothLabelsAndAnInterface)
+TEST(GeneratedInputs, TwoSubdomainsHaveBothLabelsAndAnInterface)
 {
   const Generated_mesh mesh = make_input(Shape::two_subdomains, Size::small);
   const C3t3& c3t3 = mesh.c3t3;
@@ -397,7 +397,7 @@ TEST(Generated_inputs, TwoSubdomainsHaveBothLabelsAndAnInterface)
   EXPECT_NEAR(volume_of_subdomain(c3t3, 2), half, 0.03 * half);
 }
 
-TEST(Random_sphere, HasTheRequestedPointsOnTheUnitSphere)
+TEST(RandomSphereInput, HasTheRequestedPointsOnTheUnitSphere)
 {
   const Delaunay dt = make_random_sphere();
   EXPECT_EQ(dt.number_of_vertices(), 642u);
@@ -407,7 +407,7 @@ TEST(Random_sphere, HasTheRequestedPointsOnTheUnitSphere)
   EXPECT_EQ(make_random_sphere(Size::small).number_of_vertices(), 642u);
 }
 
-TEST(Random_sphere, IsDeterministicAndSeeded)
+TEST(RandomSphereInput, IsDeterministicAndSeeded)
 {
   const auto points = [](const Delaunay& dt) {
     return std::vector<Point>(dt.points_begin(), dt.points_end());
@@ -429,7 +429,7 @@ TEST(Random_sphere, IsDeterministicAndSeeded)
   EXPECT_NE(points(a), points(make_random_sphere(642, 8)));
 }
 
-TEST(Paper_random_sphere, HasNoDihedralAngleBelowThePapersInputAndKeepsItsPoints)
+TEST(PaperRandomSphere, HasNoDihedralAngleBelowThePapersInputAndKeepsItsPoints)
 {
   const Generated_mesh mesh = make_paper_random_sphere();
   const Tr& tr = mesh.c3t3.triangulation();
@@ -474,7 +474,7 @@ TEST(Paper_random_sphere, HasNoDihedralAngleBelowThePapersInputAndKeepsItsPoints
   }
 }
 
-TEST(Paper_random_sphere, IsDeterministicAndSeeded)
+TEST(PaperRandomSphere, IsDeterministicAndSeeded)
 {
   const Mesh_signature a = signature(make_paper_random_sphere(3).c3t3);
   EXPECT_FALSE(a.cells.empty());

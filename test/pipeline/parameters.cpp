@@ -151,7 +151,8 @@ TEST(Parameters, VisitorIsCalledInBothStyles)
 {
   int classifications = 0, iterations = 0;
   Delaunay a = random_ball();
-  // The main phase alone: with the largest-angle phases, up to three times as many (test_topology.cpp).
+  // The main phase alone: with the largest-angle phases, up to three times as many
+  // (pipeline/smoothing.cpp, Pipeline.LargestAnglePhaseLowersTheLargestAngle).
   CGAL::bodt_optimize_mesh_3(a, params::max_iteration_number = 3, params::largest_angle_phase = false,
                              params::progress_visitor = Counting_visitor{&classifications, &iterations});
   EXPECT_EQ(classifications, 1);

@@ -1,7 +1,10 @@
 // B-ODT smoothing of CGAL-meshed inputs, 20 iterations: validity by exact
 // predicates, volume per subdomain, corners, feature lines, boundary distance,
 // quality never lower than the input's nor than the interior-only ODT baseline,
-// determinism. Also the paper's random sphere as a Triangulation_3.
+// determinism. Also the paper's random sphere as a Triangulation_3; and the flips
+// and the phases through the pipeline (surface, volume, curves and validity kept,
+// the same output for the same input and on any number of threads with every pass
+// at work, what the flip pass's parallel rounds rely on, the largest-angle phase).
 #include "inputs/generated_inputs.h"
 #include "test_support.h"
 
@@ -11,6 +14,7 @@
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
 #include <CGAL/BODT_3/internal/Smoothing/sweep_order.h>
+#include <CGAL/BODT_3/internal/Topology/flip_pass.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -24,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -104,7 +109,7 @@ TEST_P(Smoothing, TwentyIterationsKeepValidityVolumeFeaturesAndQuality)
 
   const auto before = BODT::mesh_quality(input.c3t3);
   const auto surface_before = BODT::boundary_triangles(input.c3t3);
-  // Insertion adds vertices; test_insertion.cpp checks it. Here the points keep their identity.
+  // Insertion adds vertices; insertion/insertion.cpp checks it. Here the points keep their identity.
   std::size_t volume_refusals = 0;
   const auto code = CGAL::bodt_optimize_mesh_3(bodt, CGAL::parameters::vertex_insertion = false,
                                                CGAL::parameters::progress_visitor = Volume_refusals{&volume_refusals});
@@ -548,3 +553,280 @@ TEST(Nodt, AFlatFaceStaysFlat)
   }
   EXPECT_GT(moved, 0u);
 }
+
+// ---------------------------------------------------------------------------
+// The flips (and the phases) through the whole pipeline, over CGAL-meshed inputs
+// with features and two subdomains (the flips on constructed configurations are
+// in topology/flips.cpp).
+namespace pipeline_flips {
+
+using Tet_mesh = BODT::Tet_mesh;
+using Point = Tet_mesh::Point;
+using bodt_inputs::C3t3;
+
+std::array<Point, 3> sorted_points(Point a, Point b, Point c)
+{
+  std::array<Point, 3> t = {a, b, c};
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// The pipeline over CGAL-meshed inputs: the boundary changes only by coplanar flips
+// (same area per patch, every new facet coplanar with a facet it replaced), every
+// subdomain keeps its volume, every curve edge stays, no cell is inverted, and the
+// mesh ends better than it started.
+class TopologyPipeline : public ::testing::TestWithParam<bodt_inputs::Shape>
+{};
+
+TEST_P(TopologyPipeline, FlipsKeepSurfaceVolumeCurvesAndValidity)
+{
+  using namespace bodt_inputs;
+  const Generated_mesh input = make_input(GetParam(), Size::small);
+  for(auto moving : {BODT::Moving_vertices::NONE, BODT::Moving_vertices::ALL})
+  {
+    SCOPED_TRACE(moving == BODT::Moving_vertices::NONE ? "flips alone" : "B-ODT + flips");
+    C3t3 c3t3 = input.c3t3;
+    std::vector<std::pair<Point, Point>> curves;
+    auto cp = c3t3.triangulation().geom_traits().construct_point_3_object();
+    for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e)
+      curves.emplace_back(cp(e->first->vertex(e->second)->point()), cp(e->first->vertex(e->third)->point()));
+    const auto before = BODT::mesh_quality(c3t3);
+    std::map<std::pair<int, int>, double> area_before;
+    std::set<std::pair<std::array<Point, 3>, std::pair<int, int>>> facets_before;
+    for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    {
+      const auto t = c3t3.triangulation().triangle(*f);
+      area_before[c3t3.surface_patch_index(*f)] += std::sqrt(t.squared_area());
+      facets_before.insert({sorted_points(t[0], t[1], t[2]), c3t3.surface_patch_index(*f)});
+    }
+
+    BODT::Smoothing_options opt;
+    opt.moving_vertices = moving;
+    opt.vertex_insertion = false;
+    const auto r = BODT::smooth(c3t3, opt);
+    EXPECT_GT(r.topology.total(), 0u);
+    const auto after = BODT::mesh_quality(c3t3);
+
+    EXPECT_TRUE(c3t3.triangulation().tds().is_valid());
+    EXPECT_TRUE(c3t3.is_valid());
+    EXPECT_EQ(after.inverted_tets, 0u);
+    std::size_t bad = 0;
+    for(auto c = c3t3.triangulation().finite_cells_begin(); c != c3t3.triangulation().finite_cells_end(); ++c)
+      if(CGAL::orientation(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
+                           cp(c->vertex(3)->point())) != CGAL::POSITIVE)
+        ++bad;
+    EXPECT_EQ(bad, 0u) << "inverted or flat cells outside the complex";
+    ASSERT_EQ(after.volume_per_subdomain.size(), before.volume_per_subdomain.size());
+    for(const auto& kv : before.volume_per_subdomain)
+      EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second);
+    std::map<std::pair<int, int>, double> area_after;
+    for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+      area_after[c3t3.surface_patch_index(*f)] += std::sqrt(c3t3.triangulation().triangle(*f).squared_area());
+    if(moving == BODT::Moving_vertices::NONE)
+    {
+      ASSERT_EQ(area_after.size(), area_before.size());
+      for(const auto& kv : area_before) EXPECT_NEAR(area_after.at(kv.first), kv.second, 1e-12 * kv.second);
+      // A facet that is new lies in the plane of an old one of its patch it shares an edge with.
+      std::map<std::pair<Point, Point>, std::vector<std::pair<std::array<Point, 3>, std::pair<int, int>>>> by_edge;
+      for(const auto& f : facets_before)
+        for(int k = 0; k < 3; ++k) by_edge[std::minmax(f.first[k], f.first[(k + 1) % 3])].push_back(f);
+      std::size_t new_facets = 0;
+      for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+      {
+        const auto t = c3t3.triangulation().triangle(*f);
+        const auto key = std::make_pair(sorted_points(t[0], t[1], t[2]), c3t3.surface_patch_index(*f));
+        if(facets_before.count(key)) continue;
+        ++new_facets;
+        bool coplanar = false;
+        for(int k = 0; k < 3 && !coplanar; ++k)
+          for(const auto& old : by_edge[std::minmax(key.first[k], key.first[(k + 1) % 3])])
+            for(const Point& x : old.first)
+              coplanar = coplanar || (old.second == key.second &&
+                                      CGAL::orientation(key.first[0], key.first[1], key.first[2], x) == CGAL::COPLANAR &&
+                                      std::find(key.first.begin(), key.first.end(), x) == key.first.end());
+        EXPECT_TRUE(coplanar) << "a boundary facet that is not coplanar with the one it replaced";
+      }
+      EXPECT_EQ(new_facets > 0, r.topology.boundary_flips > 0);
+    }
+    // Every curve edge is still an edge of the complex, between the same points
+    // (flips alone) or with its endpoints on their curve (smoothing moves them).
+    std::size_t curve_edges = 0;
+    for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) ++curve_edges;
+    EXPECT_EQ(curve_edges, curves.size());
+    if(moving == BODT::Moving_vertices::NONE)
+    {
+      std::set<std::pair<Point, Point>> now;
+      for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e)
+      {
+        const Point a = cp(e->first->vertex(e->second)->point()), b = cp(e->first->vertex(e->third)->point());
+        now.insert(std::minmax(a, b));
+      }
+      for(const auto& e : curves) EXPECT_TRUE(now.count(std::minmax(e.first, e.second)));
+    }
+    EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg);
+    EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg);
+    EXPECT_GT(after.min_dihedral_deg, before.min_dihedral_deg + 1.0);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(All, TopologyPipeline, ::testing::ValuesIn(bodt_inputs::all_shapes()),
+                         [](const ::testing::TestParamInfo<bodt_inputs::Shape>& info) {
+                           return bodt_inputs::name(info.param);
+                         });
+
+// Same input, same options: same points and same cells, flips included.
+TEST(Pipeline, SameInputSameOutput)
+{
+  using namespace bodt_inputs;
+  const Generated_mesh input = make_input(Shape::two_subdomains, Size::small);
+  C3t3 a = input.c3t3, b = input.c3t3;
+  CGAL::bodt_optimize_mesh_3(a);
+  CGAL::bodt_optimize_mesh_3(b);
+  const Tet_mesh ma = BODT::c3t3_to_tet_mesh(a), mb = BODT::c3t3_to_tet_mesh(b);
+  EXPECT_EQ(ma.points, mb.points);
+  EXPECT_EQ(ma.tets, mb.tets);
+  EXPECT_EQ(ma.triangles, mb.triangles);
+}
+
+// What lets the flip pass evaluate a round of cells concurrently and apply their
+// flips one after the other: every cell an evaluation of cell c reads or would
+// replace holds a vertex of c or the apex across one of c's faces (the pass's
+// `neighbourhood`), so an evaluation none of whose neighbourhood a flip touched
+// since is still right. Checked on every proposal of every cell of a Mesh_3
+// mesh with features and two subdomains, for each measure.
+TEST(FlipPass, EvaluationsStayWithinTheCellsNeighbourhood)
+{
+  using namespace bodt_inputs;
+  using Adapter = BODT::internal::C3t3_adapter<C3t3>;
+  const Generated_mesh input = make_input(Shape::two_subdomains, Size::small);
+  for(const auto measure : {BODT::Quality_measure::min_dihedral_sine, BODT::Quality_measure::largest_dihedral_angle})
+  {
+    C3t3 c3t3 = input.c3t3;
+    Adapter adapter(c3t3);
+    const BODT::internal::Dihedral_bounds any;   // default: every angle allowed, so more proposals
+    const BODT::internal::Flip_context<Adapter> ctx(adapter, any, false, measure);
+    BODT::internal::Edge_removal<Adapter> edge_removal;
+    BODT::internal::Multi_face_removal<Adapter> face_removal;
+    BODT::internal::Flip<Adapter> flip;
+    std::size_t proposals = 0, improving = 0;
+    auto& tr = c3t3.triangulation();
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+    {
+      std::set<C3t3::Vertex_handle> neighbourhood;
+      for(int k = 0; k < 4; ++k)
+      {
+        neighbourhood.insert(c->vertex(k));
+        neighbourhood.insert(c->neighbor(k)->vertex(c->neighbor(k)->index(c)));
+      }
+      auto check = [&](const char* what) {
+        ++proposals;
+        if(flip.improves()) ++improving;
+        for(const auto& old : flip.old_cells)
+        {
+          bool inside = false;
+          for(int k = 0; k < 4; ++k) inside = inside || neighbourhood.count(old->vertex(k)) > 0;
+          ASSERT_TRUE(inside) << what << " reads a cell with no vertex of the cell's neighbourhood";
+        }
+      };
+      for(int i = 0; i < 4; ++i)
+      {
+        for(int j = i + 1; j < 4; ++j)
+          if(edge_removal(ctx, c, i, j, flip)) check("edge removal");
+        if(!tr.is_infinite(c->neighbor(i)->vertex(c->neighbor(i)->index(c))) && face_removal(ctx, c, i, flip))
+          check("multi-face removal");
+      }
+    }
+    EXPECT_GT(proposals, 1000u);
+    EXPECT_GT(improving, 10u) << "no flip to make: the check would not reach the pass's real cases";
+  }
+}
+
+// The whole pipeline gives the same cells on 1, 2 and 4 threads with every pass
+// at work (flips, max-min steps, insertion, all three phases).
+TEST(Pipeline, SameCellsOnAnyNumberOfThreadsWithEveryPassAtWork)
+{
+  using namespace bodt_inputs;
+  struct Counts
+  {
+    std::size_t flips = 0, max_min = 0, inserted = 0, phases = 0;
+  };
+  struct Counting
+  {
+    Counts* counts;
+    void after_classification(const BODT::Smoothing_result&) {}
+    void after_iteration(const BODT::Iteration_stats& s)
+    {
+      counts->flips += s.topology.total();
+      counts->max_min += s.max_min_moves;
+      counts->inserted += s.insertion.vertices_added;
+      counts->phases = std::max<std::size_t>(counts->phases, static_cast<std::size_t>(s.phase) + 1);
+    }
+  };
+  // Features and two subdomains; handles, where insertion finds work; sharp edges and corners.
+  for(Shape shape : {Shape::two_subdomains, Shape::genus2, Shape::sharp_part})
+  {
+    SCOPED_TRACE(name(shape));
+    const Generated_mesh input = make_input(shape, Size::small);
+    BODT::Tet_mesh reference;
+    Counts counts;
+    for(int threads : {1, 2, 4})
+    {
+      C3t3 c3t3 = input.c3t3;
+      Counts now;
+      CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::number_of_threads = threads,
+                                 CGAL::parameters::progress_visitor = Counting{&now});
+      const BODT::Tet_mesh m = BODT::c3t3_to_tet_mesh(c3t3);
+      if(threads == 1)
+      {
+        reference = m;
+        counts = now;
+        continue;
+      }
+      EXPECT_TRUE(m.points == reference.points) << threads << " threads";
+      EXPECT_TRUE(m.tets == reference.tets) << threads << " threads";
+      EXPECT_TRUE(m.triangles == reference.triangles) << threads << " threads";
+    }
+    EXPECT_GT(counts.flips, 0u);
+    EXPECT_GT(counts.max_min, 0u);
+    EXPECT_EQ(counts.phases, 3u);
+    if(shape == Shape::genus2) { EXPECT_GT(counts.inserted, 0u); }
+  }
+}
+
+// The largest-angle phase (on by default) starts where the main phase ends: it
+// lowers the largest angle without lowering the smallest, keeps every
+// subdomain's volume and the vertex count, and inverts nothing.
+TEST(Pipeline, LargestAnglePhaseLowersTheLargestAngle)
+{
+  using namespace bodt_inputs;
+  for(Shape shape : {Shape::torus, Shape::two_subdomains})
+  {
+    SCOPED_TRACE(name(shape));
+    const Generated_mesh input = make_input(shape, Size::small);
+    C3t3 without = input.c3t3, with = input.c3t3;
+    BODT::Smoothing_options opt;
+    opt.largest_angle_phase = false;
+    BODT::smooth(without, opt);
+    opt.largest_angle_phase = true;
+    struct Phases
+    {
+      std::set<std::size_t>* seen;
+      void after_classification(const BODT::Smoothing_result&) const {}
+      void after_iteration(const BODT::Iteration_stats& s) const { seen->insert(s.phase); }
+    };
+    std::set<std::size_t> seen;
+    BODT::smooth(with, opt, Phases{&seen});
+    EXPECT_EQ(seen, (std::set<std::size_t>{0, 1, 2}));
+    const auto a = BODT::mesh_quality(without), b = BODT::mesh_quality(with);
+    EXPECT_EQ(b.inverted_tets, 0u);
+    EXPECT_TRUE(with.triangulation().tds().is_valid());
+    EXPECT_EQ(b.num_vertices, a.num_vertices);
+    EXPECT_GE(b.min_dihedral_deg, a.min_dihedral_deg);
+    EXPECT_LT(b.max_dihedral_deg, a.max_dihedral_deg - 1.0);
+    ASSERT_EQ(b.volume_per_subdomain.size(), a.volume_per_subdomain.size());
+    for(const auto& kv : a.volume_per_subdomain)
+      EXPECT_NEAR(b.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second);
+  }
+}
+
+} // namespace pipeline_flips

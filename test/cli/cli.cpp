@@ -480,7 +480,7 @@ TEST(Cli, JsonPrintsTheReportOnStandardOutput)
 namespace {
 
 // The boundary star of the origin: two flat half-planes meeting along the x axis,
-// their normals turning by `turn` degrees (test_classification.cpp's folded star).
+// their normals turning by `turn` degrees (classification/classification.cpp's folded star).
 BODT::internal::Vertex_star<BODT::Tet_mesh::Kernel> folded_star(double turn)
 {
   BODT::internal::Vertex_star<BODT::Tet_mesh::Kernel> star;

@@ -1,0 +1,516 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The smoothing steps called directly, on constructed grids: the move guard
+// (validity by CGAL's exact orientation against an exact oracle, shorter steps,
+// the quality guard, the volume budget), the smoothing sweep (validity, volume to
+// 1e-12, labels and fixed vertices kept, the worst cell never worse, quality raised,
+// the same bits on any number of threads), and local smoothing on a triangulation
+// (validity, exact volume, the star's worst cell raised, fixed vertices stay).
+#include "c3t3_checks.h"
+#include "exact_volumes.h"
+#include "test_support.h"
+
+#include <CGAL/BODT_3/Tet_mesh_conversion.h>
+#include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
+#include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
+#include <CGAL/BODT_3/internal/Quality/tet_quality.h>
+#include <CGAL/BODT_3/internal/Smoothing/Local_smoothing.h>
+#include <CGAL/BODT_3/internal/Smoothing/Move_guard.h>
+#include <CGAL/BODT_3/internal/Smoothing/Smoothing_sweep.h>
+#include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
+#include <CGAL/Random.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <vector>
+
+namespace BODT = CGAL::BODT_3;
+namespace BI = CGAL::BODT_3::internal;
+using K = BODT::Tet_mesh::Kernel;
+using Point = K::Point_3;
+using Vector = K::Vector_3;
+using Flat_mesh = BI::Flat_mesh<K>;
+using Guard = BI::Move_guard<K>;
+using bodt_test::Exact;
+
+namespace {
+
+Flat_mesh flat_mesh_of(const BODT::Tet_mesh& m)
+{
+  Flat_mesh s;
+  s.points = m.points;
+  s.cells = m.tets;
+  s.in_mesh.assign(m.tets.size(), 1);
+  s.subdomain = m.tet_labels;
+  s.build_incidences();
+  return s;
+}
+
+int one_label(int, int, int) { return 1; }
+int two_labels(int i, int, int) { return i == 0 ? 1 : 2; }   // an interface at x = 1
+
+// cube_grid(n) with its interior points moved by up to `jitter` (seeded); points of
+// the interface x = 1 (when `keep_interface`) stay on it.
+BODT::Tet_mesh jittered(int n, int (*label)(int, int, int), double jitter, bool keep_interface = true)
+{
+  BODT::Tet_mesh m = bodt_test::cube_grid(n, label);
+  CGAL::Random rng(17);
+  for(auto& p : m.points)
+  {
+    if(p.x() == 0 || p.y() == 0 || p.z() == 0 || p.x() == n || p.y() == n || p.z() == n) continue;
+    const double dx = (keep_interface && p.x() == 1) ? 0 : rng.get_double(-jitter, jitter);
+    p = Point(p.x() + dx, p.y() + rng.get_double(-jitter, jitter), p.z() + rng.get_double(-jitter, jitter));
+  }
+  return m;
+}
+
+// Whether v may go to p, decided independently of the guard: every cell of v, with
+// v at p, has a positive determinant in exact arithmetic.
+bool valid_position(const Flat_mesh& s, int v, const Point& p)
+{
+  for(const auto& c : s.cells)
+  {
+    if(std::find(c.begin(), c.end(), v) == c.end()) continue;
+    Point q[4];
+    for(int k = 0; k < 4; ++k) q[k] = c[k] == v ? p : s.points[c[k]];
+    if(!(bodt_test::exact_det(q[0], q[1], q[2], q[3]) > 0)) return false;
+  }
+  return true;
+}
+
+double worst_of(const Flat_mesh& s, int v = -1)
+{
+  double worst = 2;
+  for(const auto& c : s.cells)
+    if(v < 0 || std::find(c.begin(), c.end(), v) != c.end())
+      worst = std::min(worst, BI::min_dihedral_sine(s.points[c[0]], s.points[c[1]], s.points[c[2]], s.points[c[3]]));
+  return worst;
+}
+
+double mean_of(const Flat_mesh& s)
+{
+  double sum = 0;
+  for(const auto& c : s.cells)
+    sum += BI::min_dihedral_sine(s.points[c[0]], s.points[c[1]], s.points[c[2]], s.points[c[3]]);
+  return sum / s.cells.size();
+}
+
+std::size_t not_positive(const Flat_mesh& s)
+{
+  std::size_t bad = 0;
+  for(const auto& c : s.cells)
+    if(CGAL::orientation(s.points[c[0]], s.points[c[1]], s.points[c[2]], s.points[c[3]]) != CGAL::POSITIVE) ++bad;
+  return bad;
+}
+
+std::map<int, Exact> volumes(const Flat_mesh& s) { return bodt_test::exact_volumes(s.points, s.cells, s.subdomain); }
+
+BI::Dihedral_bounds extreme_angles(const Flat_mesh& s)
+{
+  BI::Dihedral_bounds b = BI::Dihedral_bounds::empty();
+  for(const auto& c : s.cells) b.include(s.points[c[0]], s.points[c[1]], s.points[c[2]], s.points[c[3]]);
+  return b;
+}
+
+} // namespace
+
+// The guard accepts a position exactly when every cell of the vertex stays
+// positively oriented in exact arithmetic: random positions, and positions on a
+// half-integer lattice, many of them exactly on the plane of a face of the star.
+TEST(MoveGuard, DecidesValidityByExactOrientation)
+{
+  Flat_mesh s = flat_mesh_of(bodt_test::cube_grid(2, one_label));
+  const int v = bodt_test::grid_index(2, 1, 1, 1);
+  Guard guard(s, false, BI::Dihedral_bounds());
+  Guard::Trial trial;
+  CGAL::Random rng(3);
+  int accepted = 0, refused = 0, degenerate = 0;
+  for(int t = 0; t < 3000; ++t)
+  {
+    Point p;
+    if(t % 2)
+      p = Point(rng.get_double(0, 2), rng.get_double(0, 2), rng.get_double(0, 2));
+    else
+      p = Point(0.5 * rng.get_int(0, 5), 0.5 * rng.get_int(0, 5), 0.5 * rng.get_int(0, 5));
+    const bool expected = valid_position(s, v, p);
+    ASSERT_EQ(guard.accepts(v, p, trial), expected) << "position " << p;
+    if(!expected)
+    {
+      EXPECT_EQ(trial.last_refusal, Guard::Refusal::inverts_mesh_cell);
+      ++refused;
+    }
+    else
+      ++accepted;
+    for(const auto& c : s.cells)
+      if(std::find(c.begin(), c.end(), v) != c.end())
+      {
+        Point q[4];
+        for(int k = 0; k < 4; ++k) q[k] = c[k] == v ? p : s.points[c[k]];
+        if(CGAL::orientation(q[0], q[1], q[2], q[3]) == CGAL::COPLANAR)
+        {
+          ++degenerate;
+          break;
+        }
+      }
+  }
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(refused, 100);
+  EXPECT_GT(degenerate, 50);
+  EXPECT_EQ(s.points[v], Point(1, 1, 1));   // accepts() alone moves nothing
+}
+
+// A refused move is tried at 1/2, 1/4, 1/8 of its length: the guard applies the
+// longest valid one (the exact oracle's), to the bit, or none.
+TEST(MoveGuard, ShortensARefusedMoveByHalves)
+{
+  const int v = bodt_test::grid_index(2, 1, 1, 1);
+  int shortened = 0, none = 0;
+  CGAL::Random rng(5);
+  for(int t = 0; t < 200; ++t)
+  {
+    Flat_mesh s = flat_mesh_of(bodt_test::cube_grid(2, one_label));
+    Guard guard(s, false, BI::Dihedral_bounds());
+    Guard::Trial trial;
+    const double length = rng.get_double(0.2, 12.0);
+    Vector X(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
+    X = X * (length / std::sqrt(X.squared_length()));
+    const Point x0 = s.points[v];
+    double expected = 0;
+    for(double f = 1; f >= 0.125; f *= 0.5)
+      if(valid_position(s, v, x0 + f * X))
+      {
+        expected = f;
+        break;
+      }
+    const double got = guard.move(v, X, trial);
+    ASSERT_EQ(got, expected) << "move " << X;
+    EXPECT_EQ(s.points[v], expected > 0 ? x0 + expected * X : x0);
+    if(expected < 1) { EXPECT_EQ(trial.first_refusal, Guard::Refusal::inverts_mesh_cell); }
+    shortened += expected > 0 && expected < 1;
+    none += expected == 0;
+    EXPECT_EQ(not_positive(s), 0u);
+  }
+  EXPECT_GT(shortened, 10);
+  EXPECT_GT(none, 10);
+}
+
+// With the quality guard, no accepted move makes the star's worst cell worse or
+// leaves the extreme angles of the input; the cell qualities the guard keeps are
+// those of the cells now; moves that would worsen the star are refused as such.
+TEST(MoveGuard, QualityGuardNeverWorsensTheStar)
+{
+  Flat_mesh s = flat_mesh_of(jittered(3, one_label, 0.2));
+  ASSERT_EQ(not_positive(s), 0u);
+  const BI::Dihedral_bounds bounds = extreme_angles(s);
+  Guard guard(s, true, bounds);
+  Guard::Trial trial;
+  CGAL::Random rng(9);
+  int moved = 0, worsening = 0;
+  const double mesh_worst = worst_of(s);
+  for(int t = 0; t < 400; ++t)
+  {
+    const int v = bodt_test::grid_index(3, 1 + rng.get_int(0, 2), 1 + rng.get_int(0, 2), 1 + rng.get_int(0, 2));
+    const Vector X(rng.get_double(-0.3, 0.3), rng.get_double(-0.3, 0.3), rng.get_double(-0.3, 0.3));
+    const double before = worst_of(s, v);
+    EXPECT_NEAR(guard.worst_around(v), before, 1e-12);
+    const Point x0 = s.points[v];
+    const double f = guard.move(v, X, trial);
+    if(f > 0)
+    {
+      ++moved;
+      EXPECT_GE(worst_of(s, v), before - 1e-12);
+      EXPECT_TRUE(valid_position(s, v, s.points[v]));
+      for(std::size_t c = 0; c < s.cells.size(); ++c)
+      {
+        const auto& q = s.cells[c];
+        if(std::find(q.begin(), q.end(), v) == q.end()) continue;
+        EXPECT_NEAR(guard.cell_quality(static_cast<int>(c)),
+                  BI::min_dihedral_sine(s.points[q[0]], s.points[q[1]], s.points[q[2]], s.points[q[3]]), 1e-12);
+        EXPECT_TRUE(bounds.contains(s.points[q[0]], s.points[q[1]], s.points[q[2]], s.points[q[3]],
+                                    guard.cell_quality(static_cast<int>(c))));
+      }
+    }
+    else
+      EXPECT_EQ(s.points[v], x0);
+    if(f < 1 && trial.first_refusal == Guard::Refusal::worsens_quality) ++worsening;
+  }
+  EXPECT_GT(moved, 20);
+  EXPECT_GT(worsening, 20);
+  EXPECT_GE(worst_of(s), mesh_worst);
+  EXPECT_EQ(not_positive(s), 0u);
+}
+
+// With a budget: a vertex inside one subdomain keeps the volumes exactly and is
+// not priced; a vertex of the interface x = 1 may slide in it (the volumes stay
+// within 1e-12, exactly) but not leave it (refused as a volume change).
+TEST(MoveGuard, VolumeBudgetPricesOnlyMovesThatMayChangeAVolume)
+{
+  Flat_mesh s = flat_mesh_of(bodt_test::cube_grid(3, two_labels));
+  const BI::Volume_budget budget = BI::Volume_budget::of(s);
+  ASSERT_TRUE(budget.limited());
+  Guard guard(s, false, BI::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine, 1, &budget);
+  Guard::Trial trial;
+  const int inner = bodt_test::grid_index(3, 2, 1, 2), on_interface = bodt_test::grid_index(3, 1, 2, 1);
+  EXPECT_TRUE(guard.keeps_volume(inner));
+  EXPECT_FALSE(guard.keeps_volume(on_interface));
+  const auto before = volumes(s);
+
+  EXPECT_EQ(guard.move(inner, Vector(0.13, -0.21, 0.17), trial), 1.0);
+  EXPECT_EQ(trial.cost, 0);
+  EXPECT_TRUE(volumes(s) == before) << "an interior vertex changed a volume";
+
+  const Point x0 = s.points[on_interface];
+  EXPECT_EQ(guard.move(on_interface, Vector(0.2, 0.05, -0.1), trial), 0.0);
+  EXPECT_EQ(trial.first_refusal, Guard::Refusal::changes_volume);
+  EXPECT_EQ(s.points[on_interface], x0);
+
+  EXPECT_EQ(guard.move(on_interface, Vector(0, 0.15, -0.1), trial), 1.0);
+  EXPECT_LE(trial.cost, budget.allowance());
+  EXPECT_EQ(s.points[on_interface].x(), 1.0);
+  EXPECT_TRUE(bodt_test::volumes_within(before, volumes(s), 1e-12));
+  EXPECT_TRUE(volumes(s) == before) << "a slide within a planar interface is exact";
+  EXPECT_EQ(not_positive(s), 0u);
+}
+
+namespace {
+
+struct Sweep_run
+{
+  Flat_mesh mesh;
+  BI::Vertex_classification classification;
+  std::size_t moved = 0;
+  double spent = 0;   // of the volume budget
+};
+
+// `sweeps` sweeps over the jittered two-subdomain grid, its interface jittered too
+// (moved by `offset`), on `threads` threads.
+Flat_mesh sweep_input(double offset)
+{
+  BODT::Tet_mesh m = jittered(4, two_labels, 0.2, false);   // a curved interface
+  for(auto& p : m.points) p = Point(p.x() + offset, p.y() + offset, p.z() + offset);
+  return flat_mesh_of(m);
+}
+
+Sweep_run run_sweeps(int sweeps, int threads, double offset = 0)
+{
+  Sweep_run r{sweep_input(offset), {}, 0, 0};
+  r.classification = BI::classify_vertices(r.mesh, BI::Feature_hints(), BI::Classification_options());
+  BODT::Smoothing_options opt;
+  opt.threads = threads;
+  BI::Volume_budget budget = BI::Volume_budget::of(r.mesh, threads);
+  BI::Smoothing_sweep<K> sweep(r.mesh, r.classification, opt, extreme_angles(r.mesh), &budget);
+  for(int k = 0; k < sweeps; ++k)
+  {
+    BODT::Iteration_stats stats;
+    sweep.run(stats);
+    r.moved += stats.moved;
+  }
+  r.spent = budget.spent();
+  return r;
+}
+
+} // namespace
+
+// Sweeps over a jittered grid of two subdomains (a curved interface): every cell
+// stays positively oriented (exact), every subdomain keeps its volume to 1e-12
+// (exact arithmetic), the budget is charged for the moves that may change it,
+// labels and fixed vertices stay, the worst cell is never worse and the mean
+// quality rises.
+TEST(SmoothingSweep, KeepsValidityVolumeAndLabelsAndRaisesQuality)
+{
+  const Flat_mesh input = sweep_input(0);
+  ASSERT_EQ(not_positive(input), 0u);
+  const Sweep_run r = run_sweeps(5, 1);
+  EXPECT_GT(r.moved, 20u);
+  // The interface's and the boundary's vertices moved, and paid for it, within the budget.
+  EXPECT_GT(r.spent, 0.0);
+  EXPECT_LT(r.spent, 1.0);
+  EXPECT_EQ(not_positive(r.mesh), 0u);
+  EXPECT_TRUE(bodt_test::volumes_within(volumes(input), volumes(r.mesh), 1e-12));
+  EXPECT_EQ(r.mesh.subdomain, input.subdomain);
+  EXPECT_EQ(r.mesh.cells, input.cells);
+  std::size_t fixed = 0;
+  for(std::size_t v = 0; v < input.points.size(); ++v)
+    if(r.classification.kind[v] == BI::Vertex_kind::fixed)
+    {
+      ++fixed;
+      EXPECT_EQ(r.mesh.points[v], input.points[v]) << "fixed vertex " << v;
+    }
+  EXPECT_GE(fixed, 8u);   // the box's corners at least
+  EXPECT_GE(worst_of(r.mesh), worst_of(input));
+  EXPECT_GT(mean_of(r.mesh), mean_of(input) + 0.01);
+  // Every mesh cell within the input's extreme angles.
+  const BI::Dihedral_bounds bounds = extreme_angles(input);
+  for(const auto& c : r.mesh.cells)
+  {
+    const auto& p = r.mesh.points;
+    const double q = BI::min_dihedral_sine(p[c[0]], p[c[1]], p[c[2]], p[c[3]]);
+    EXPECT_TRUE(bounds.contains(p[c[0]], p[c[1]], p[c[2]], p[c[3]], q));
+  }
+}
+
+// Far from the origin (1e7), rounding a new position on the curved interface
+// changes volumes by far more than the promise: the sweep's moves are priced and
+// refused when the budget cannot pay, so every subdomain keeps its volume within
+// the budget's 1e-11 (exact arithmetic; without the budget's allowance, 1e-9).
+TEST(SmoothingSweep, FarFromTheOriginTheBudgetKeepsTheVolume)
+{
+  const double offset = 1e7;
+  const Flat_mesh input = sweep_input(offset);
+  ASSERT_EQ(not_positive(input), 0u);
+  const Sweep_run r = run_sweeps(5, 1, offset);
+  EXPECT_GT(r.moved, 10u);
+  EXPECT_EQ(not_positive(r.mesh), 0u);
+  EXPECT_LT(r.spent, 1.0);
+  EXPECT_TRUE(bodt_test::volumes_within(volumes(input), volumes(r.mesh), 1e-11));
+}
+
+// Vertices of one colour move concurrently: the same bits on one and two threads.
+TEST(SmoothingSweep, SameBitsOnAnyNumberOfThreads)
+{
+  const Sweep_run one = run_sweeps(3, 1), two = run_sweeps(3, 2);
+  EXPECT_EQ(one.moved, two.moved);
+  EXPECT_EQ(one.mesh.points, two.mesh.points);
+}
+
+namespace {
+
+using File_c3t3 = bodt_test::File_c3t3;
+using Adapter = BI::C3t3_adapter<File_c3t3>;
+using Vertex_handle = File_c3t3::Vertex_handle;
+using bodt_test::bare;
+using bodt_test::exact_subdomain_volumes;
+
+double star_worst(const File_c3t3& c3t3, Vertex_handle v)
+{
+  std::vector<File_c3t3::Cell_handle> cells;
+  c3t3.triangulation().finite_incident_cells(v, std::back_inserter(cells));
+  double worst = 2;
+  for(const auto& c : cells)
+    if(c3t3.is_in_complex(c))
+      worst = std::min(worst, BI::min_dihedral_sine(bare(c3t3, c->vertex(0)), bare(c3t3, c->vertex(1)),
+                                                    bare(c3t3, c->vertex(2)), bare(c3t3, c->vertex(3))));
+  return worst;
+}
+
+} // namespace
+
+// The interior vertex of a 2 x 2 x 2 grid, pushed off its place: its local move on
+// the triangulation brings it back towards it, raising its star's worst cell,
+// keeping the volume exactly and every cell positively oriented; a fixed vertex stays.
+TEST(LocalSmoothing, InteriorMoveRaisesTheStarAndKeepsTheVolumeExactly)
+{
+  BODT::Tet_mesh m = bodt_test::cube_grid(2, one_label);
+  const int centre = bodt_test::grid_index(2, 1, 1, 1);
+  m.points[centre] = Point(0.82, 0.9, 1.14);
+  File_c3t3 c3t3;
+  std::vector<Vertex_handle> handles;
+  BODT::tet_mesh_to_c3t3(m, c3t3, "test", &handles);
+  bodt_test::expect_valid(c3t3);
+  Adapter adapter(c3t3, false);
+  BI::Local_smoothing<Adapter> smoothing(adapter, BI::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine,
+                                         BODT::Tensor_voting_options());
+  const auto before = exact_subdomain_volumes(c3t3);
+  const double worst = star_worst(c3t3, handles[centre]);
+  const Point corner = bare(c3t3, handles[0]);
+  EXPECT_FALSE(smoothing.move(handles[0], BI::Vertex_kind::fixed));
+  EXPECT_EQ(bare(c3t3, handles[0]), corner);
+
+  ASSERT_TRUE(smoothing.move(handles[centre], BI::Vertex_kind::interior));
+  bodt_test::expect_valid(c3t3);
+  EXPECT_TRUE(exact_subdomain_volumes(c3t3) == before);
+  EXPECT_GT(star_worst(c3t3, handles[centre]), worst + 0.01);
+  const Point now = bare(c3t3, handles[centre]);
+  EXPECT_LT(CGAL::squared_distance(now, Point(1, 1, 1)),
+            CGAL::squared_distance(Point(0.82, 0.9, 1.14), Point(1, 1, 1)));
+}
+
+// A vertex of the planar interface x = 1, moved as a surface vertex with a volume
+// budget: it stays on the interface, and both subdomains keep their volume to
+// 1e-12 (exact arithmetic); the budget is charged no more than it holds.
+TEST(LocalSmoothing, InterfaceMoveKeepsBothVolumesWithinTheBudget)
+{
+  BODT::Tet_mesh m = bodt_test::cube_grid(2, two_labels);
+  const int centre = bodt_test::grid_index(2, 1, 1, 1);
+  m.points[centre] = Point(1, 0.8, 1.15);
+  File_c3t3 c3t3;
+  std::vector<Vertex_handle> handles;
+  BODT::tet_mesh_to_c3t3(m, c3t3, "test", &handles);
+  Adapter adapter(c3t3, false);
+  BI::Volume_budget budget(std::vector<std::pair<int, double>>{{1, 4.0}, {2, 4.0}});
+  BI::Local_smoothing<Adapter> smoothing(adapter, BI::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine,
+                                         BODT::Tensor_voting_options(), &budget);
+  const auto before = exact_subdomain_volumes(c3t3);
+  const double worst = star_worst(c3t3, handles[centre]);
+  ASSERT_TRUE(smoothing.move(handles[centre], BI::Vertex_kind::surface));
+  bodt_test::expect_valid(c3t3);
+  EXPECT_TRUE(bodt_test::volumes_within(before, exact_subdomain_volumes(c3t3), 1e-12));
+  EXPECT_LT(budget.spent(), 1.0);
+  EXPECT_GE(star_worst(c3t3, handles[centre]), worst);
+  EXPECT_NE(bare(c3t3, handles[centre]), Point(1, 0.8, 1.15));
+}
+
+// Every interior vertex of a jittered grid, moved five times over: no move makes
+// its star's worst cell worse (the guard), none inverts a cell, and the volume stays
+// exactly the same (each link stays).
+TEST(LocalSmoothing, MovesNeverWorsenTheStarAndKeepTheVolumeExactly)
+{
+  const BODT::Tet_mesh m = jittered(3, one_label, 0.25);
+  File_c3t3 c3t3;
+  std::vector<Vertex_handle> handles;
+  BODT::tet_mesh_to_c3t3(m, c3t3, "test", &handles);
+  bodt_test::expect_valid(c3t3);
+  Adapter adapter(c3t3, false);
+  BI::Local_smoothing<Adapter> smoothing(adapter, BI::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine,
+                                         BODT::Tensor_voting_options());
+  const auto before = exact_subdomain_volumes(c3t3);
+  int moved = 0;
+  for(int round = 0; round < 5; ++round)
+    for(int k = 1; k <= 2; ++k)
+      for(int j = 1; j <= 2; ++j)
+        for(int i = 1; i <= 2; ++i)
+        {
+          const Vertex_handle v = handles[bodt_test::grid_index(3, i, j, k)];
+          const double worst = star_worst(c3t3, v);
+          const Point x0 = bare(c3t3, v);
+          if(smoothing.move(v, BI::Vertex_kind::interior))
+          {
+            ++moved;
+            EXPECT_GE(star_worst(c3t3, v), worst - 1e-12) << "round " << round << ", vertex " << i << j << k;
+          }
+          else
+            EXPECT_EQ(bare(c3t3, v), x0);
+        }
+  EXPECT_GT(moved, 10);
+  bodt_test::expect_valid(c3t3);
+  EXPECT_TRUE(exact_subdomain_volumes(c3t3) == before);
+}
+
+// A budget that allows no measurable change: the interface vertex, off the plane
+// of its neighbours, is not moved, and nothing is charged.
+TEST(LocalSmoothing, RefusesAMoveTheBudgetCannotPay)
+{
+  BODT::Tet_mesh m = bodt_test::cube_grid(2, two_labels);
+  const int centre = bodt_test::grid_index(2, 1, 1, 1);
+  m.points[centre] = Point(1.1, 0.8, 1.15);
+  File_c3t3 c3t3;
+  std::vector<Vertex_handle> handles;
+  BODT::tet_mesh_to_c3t3(m, c3t3, "test", &handles);
+  Adapter adapter(c3t3, false);
+  BI::Volume_budget budget(std::vector<std::pair<int, double>>{{1, 1e-30}, {2, 1e-30}});
+  BI::Local_smoothing<Adapter> smoothing(adapter, BI::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine,
+                                         BODT::Tensor_voting_options(), &budget);
+  const auto before = exact_subdomain_volumes(c3t3);
+  EXPECT_FALSE(smoothing.move(handles[centre], BI::Vertex_kind::surface));
+  EXPECT_EQ(bare(c3t3, handles[centre]), Point(1.1, 0.8, 1.15));
+  EXPECT_TRUE(exact_subdomain_volumes(c3t3) == before);
+  EXPECT_EQ(budget.spent(), 0.0);
+  // Without a budget, the same vertex moves.
+  BI::Local_smoothing<Adapter> free(adapter, BI::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine,
+                                    BODT::Tensor_voting_options());
+  EXPECT_TRUE(free.move(handles[centre], BI::Vertex_kind::surface));
+}

@@ -1,0 +1,212 @@
+// Copyright (c) 2026 The CGAL BODT_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The utilities the stages share (internal/Utilities/): the flat view's handle
+// index, the flip pass's tuple map, the parallel grouping, face matching, and the
+// flip and insertion passes' history of failed attempts.
+#include "delaunay_cells.h"
+
+#include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
+#include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
+#include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
+#include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
+#include <CGAL/Random.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <vector>
+
+namespace BODT = CGAL::BODT_3;
+using bodt_test::Delaunay_cells;
+
+// The flat view's handle index: every inserted handle found with its index, the
+// others not, duplicates refused, through several rehashes.
+TEST(HandleIndexMap, FindsWhatWasInsertedThroughGrowth)
+{
+  std::vector<int> storage(5000), others(100);
+  CGAL::BODT_3::internal::Handle_index_map<int*> map;
+  map.reset(0);
+  for(std::size_t i = 0; i < storage.size(); ++i) EXPECT_TRUE(map.insert(&storage[i], static_cast<int>(i)));
+  EXPECT_FALSE(map.insert(&storage[7], 99));
+  EXPECT_EQ(map.size(), storage.size());
+  for(std::size_t i = 0; i < storage.size(); ++i) ASSERT_EQ(map.find(&storage[i]), static_cast<int>(i));
+  for(int& x : others) EXPECT_EQ(map.find(&x), -1);
+  map.reset(10);
+  EXPECT_EQ(map.find(&storage[0]), -1);
+  EXPECT_EQ(map.size(), 0u);
+}
+
+// Handles inserted from several threads at once are found with their index.
+TEST(HandleIndexMap, InsertAllFromThreadsFindsEveryHandle)
+{
+  std::vector<int> storage(50000), others(100);
+  std::vector<int*> handles;
+  for(int& x : storage) handles.push_back(&x);
+  for(int threads : {1, 2, 4})
+  {
+    CGAL::BODT_3::internal::Handle_index_map<int*> map;
+    map.reset(handles.size() / 4);   // grows before the threads insert
+    CGAL::BODT_3::internal::Thread_workers<char> workers(threads);
+    map.insert_all(handles, workers);
+    EXPECT_EQ(map.size(), handles.size());
+    for(std::size_t i = 0; i < handles.size(); ++i) ASSERT_EQ(map.find(handles[i]), static_cast<int>(i));
+    for(int& x : others) EXPECT_EQ(map.find(&x), -1);
+    EXPECT_FALSE(map.insert(handles[9], 1));
+  }
+}
+
+// The flip pass's map from vertex-id tuples: the same answers as std::map over
+// random inserts and updates (keys that differ only in order are different),
+// through several rehashes, and after clear.
+TEST(IdTupleMap, AgreesWithStdMapThroughGrowth)
+{
+  CGAL::Random random(11);
+  CGAL::BODT_3::internal::Id_tuple_map<4, int> map;
+  std::map<std::array<int, 4>, int> reference;
+  auto key = [&] {
+    return std::array<int, 4>{random.get_int(0, 40), random.get_int(0, 40), random.get_int(0, 40), random.get_int(0, 40)};
+  };
+  EXPECT_EQ(map.find(key()), nullptr);
+  for(int i = 0; i < 20000; ++i)
+  {
+    const auto k = key();
+    if(i % 3 == 0)
+    {
+      map.assign(k, i);
+      reference[k] = i;
+    }
+    else
+    {
+      bool inserted = false;
+      int& value = map.find_or_insert(k, -i, inserted);
+      const auto ins = reference.emplace(k, -i);
+      ASSERT_EQ(inserted, ins.second);
+      ASSERT_EQ(value, ins.first->second);
+      if(!inserted) value = reference[k] = value + 1;
+    }
+  }
+  EXPECT_EQ(map.size(), reference.size());
+  for(const auto& kv : reference)
+  {
+    const int* found = map.find(kv.first);
+    ASSERT_NE(found, nullptr);
+    ASSERT_EQ(*found, kv.second);
+  }
+  for(int i = 0; i < 1000; ++i)
+  {
+    const auto k = key();
+    const int* found = map.find(k);
+    EXPECT_EQ(found != nullptr, reference.count(k) == 1);
+  }
+  map.clear();
+  EXPECT_EQ(map.size(), 0u);
+  EXPECT_EQ(map.find(reference.begin()->first), nullptr);
+}
+
+// The parallel counting sort groups like a sequential stable one, on any number of threads.
+TEST(GroupByKey, StableGroupsOnAnyNumberOfThreads)
+{
+  CGAL::Random random(3);
+  const std::size_t items = 100000, keys = 5000;
+  std::vector<std::array<int, 3>> item_keys(items);
+  for(auto& k : item_keys)
+    for(int& x : k) x = random.get_int(0, static_cast<int>(keys));
+  // Item i emits (k, 3 i + j) for its j-th key k.
+  auto each = [&](std::size_t i, const auto& emit) {
+    for(int j = 0; j < 3; ++j) emit(static_cast<std::size_t>(item_keys[i][j]), static_cast<long>(3 * i + j));
+  };
+  std::vector<std::vector<long>> expected(keys);
+  for(std::size_t i = 0; i < items; ++i)
+    for(int j = 0; j < 3; ++j) expected[item_keys[i][j]].push_back(static_cast<long>(3 * i + j));
+  for(int threads : {1, 2, 4, 16})
+  {
+    std::vector<int> begin;
+    std::vector<long> values;
+    CGAL::BODT_3::internal::group_by_key<long>(items, keys, threads, each, begin, values);
+    ASSERT_EQ(begin.size(), keys + 1);
+    ASSERT_EQ(values.size(), 3 * items);
+    for(std::size_t k = 0; k < keys; ++k)
+      ASSERT_EQ(std::vector<long>(values.begin() + begin[k], values.begin() + begin[k + 1]), expected[k])
+          << "key " << k << ", " << threads << " threads";
+  }
+}
+
+// Face matching without hashing finds exactly the triangulation's adjacency, the
+// matched face has the same three vertices, and the result does not depend on the
+// number of threads.
+TEST(TetFaceMatching, FindsTheTriangulationsAdjacencyOnAnyNumberOfThreads)
+{
+  const Delaunay_cells d(3000);
+  const CGAL::BODT_3::internal::Tet_face_matching one(d.cells, d.points.size(), 1);
+  EXPECT_EQ(one.crowded_face, -1);
+  ASSERT_EQ(one.match.size(), 4 * d.cells.size());
+  for(std::size_t f = 0; f < one.match.size(); ++f)
+  {
+    const int m = one.match[f];
+    ASSERT_EQ(m < 0 ? -1 : m / 4, d.neighbor[f]) << "face " << f;
+    if(m < 0) continue;
+    EXPECT_EQ(one.match[static_cast<std::size_t>(m)], static_cast<int>(f));
+    // The far vertices differ; the three others are shared.
+    const auto& a = d.cells[f / 4];
+    const auto& b = d.cells[static_cast<std::size_t>(m / 4)];
+    EXPECT_EQ(std::count(b.begin(), b.end(), a[f % 4]), 0);
+    for(int k = 1; k < 4; ++k) EXPECT_EQ(std::count(b.begin(), b.end(), a[(f % 4 + k) % 4]), 1);
+  }
+  for(int threads : {2, 4})
+    EXPECT_EQ(CGAL::BODT_3::internal::Tet_face_matching(d.cells, d.points.size(), threads).match, one.match);
+}
+
+// Three tetrahedra on one face: none of the three is matched, and the first face
+// (by id) of the crowd is reported; a tetrahedron using a vertex twice is skipped.
+TEST(TetFaceMatching, ReportsACrowdedFaceAndSurvivesABrokenCell)
+{
+  const std::vector<std::array<int, 4>> cells = {{0, 1, 2, 3}, {5, 6, 7, 8}, {1, 0, 2, 4}, {0, 1, 2, 5}, {6, 6, 7, 8}};
+  const CGAL::BODT_3::internal::Tet_face_matching faces(cells, 9);
+  EXPECT_EQ(faces.crowded_face, 3);   // cell 0, face opposite vertex 3: (0 1 2)
+  EXPECT_EQ(faces.match[3], -1);
+  EXPECT_EQ(faces.match[4 * 2 + 3], -1);
+  EXPECT_EQ(faces.match[4 * 3 + 3], -1);
+}
+
+// When a cell whose flips failed is tried again: not before its wait (1, 2, 4, 8
+// passes after 1, 2, 3, 4 failures), and only once something within one edge of it
+// changed since the failure; after `retries_after_moves` failures, only a new
+// connectivity counts, moves alone do not.
+TEST(AttemptHistory, FailedCellsAreRetriedAfterTheirWaitAndAChange)
+{
+  BODT::internal::Attempt_history h;
+  h.retries_after_moves = 1;
+  h.region_stamp.assign(10, 0);
+  h.topology_stamp.assign(10, 0);
+  const std::array<int, 4> cell{1, 2, 3, 4};
+  EXPECT_TRUE(h.worth_trying(cell));   // never tried
+  h.pass = 1;
+  h.clock = 5;
+  h.record_failure(cell);
+  h.pass = 2;
+  EXPECT_FALSE(h.worth_trying(cell));   // nothing changed
+  h.region_stamp[7] = 6;                // a vertex that is not the cell's
+  EXPECT_FALSE(h.worth_trying(cell));
+  h.region_stamp[3] = 6;                // a vertex within one edge moved
+  EXPECT_TRUE(h.worth_trying(cell));
+  h.clock = 7;
+  h.record_failure(cell);               // second failure, at pass 2: wait 2
+  h.region_stamp[2] = 8;
+  h.topology_stamp[2] = 8;
+  h.pass = 3;
+  EXPECT_FALSE(h.worth_trying(cell));   // within the wait
+  h.pass = 4;
+  h.topology_stamp[2] = 0;
+  EXPECT_FALSE(h.worth_trying(cell));   // moves alone no longer count
+  h.star_changed(4);                    // a flip gave vertex 4 a new star, at clock 7
+  EXPECT_FALSE(h.worth_trying(cell));   // not after the failure
+  h.clock = 9;
+  h.star_changed(4);
+  EXPECT_TRUE(h.worth_trying(cell));
+  EXPECT_EQ(h.region_stamp[4], 9u);
+}
