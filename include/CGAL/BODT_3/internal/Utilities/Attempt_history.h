@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <limits>
 #include <vector>
@@ -30,11 +31,11 @@ namespace internal {
 /// only a new connectivity around it does (doc/stages.md measures both).
 struct Attempt_history
 {
-  struct Failure
+  struct Failure   // 16 bytes: a map slot is 32
   {
     std::size_t clock;
-    std::size_t pass;
-    std::size_t count;
+    std::uint32_t pass;
+    std::uint32_t count;
   };
   std::size_t clock = 0;
   std::size_t pass = 0;   // set by the caller
@@ -74,8 +75,8 @@ struct Attempt_history
   void record_failure(const std::array<int, 4>& ids)
   {
     bool inserted;
-    Failure& f = failed.find_or_insert(ids, Failure{clock, pass, 1}, inserted);
-    if(!inserted) f = Failure{clock, pass, f.count + 1};
+    Failure& f = failed.find_or_insert(ids, Failure{clock, static_cast<std::uint32_t>(pass), 1}, inserted);
+    if(!inserted) f = Failure{clock, static_cast<std::uint32_t>(pass), f.count + 1};
   }
 };
 

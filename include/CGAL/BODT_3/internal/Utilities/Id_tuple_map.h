@@ -3,9 +3,12 @@
 #ifndef CGAL_BODT_3_INTERNAL_UTILITIES_ID_TUPLE_MAP_H
 #define CGAL_BODT_3_INTERNAL_UTILITIES_ID_TUPLE_MAP_H
 
+#include <CGAL/assertions.h>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -27,7 +30,7 @@ public:
 
   void clear()
   {
-    for(Slot& s : slots_) s.used = false;
+    for(Slot& s : slots_) s.key[0] = empty;
     size_ = 0;
   }
 
@@ -38,7 +41,7 @@ public:
     for(std::size_t s = slot(key);; s = (s + 1) & (slots_.size() - 1))
     {
       const Slot& x = slots_[s];
-      if(!x.used) return nullptr;
+      if(x.key[0] == empty) return nullptr;
       if(x.key == key) return &x.value;
     }
   }
@@ -46,18 +49,19 @@ public:
   /// The value of `key`, inserted as `initial` if absent; `inserted` tells which.
   Value& find_or_insert(const Key& key, const Value& initial, bool& inserted)
   {
-    if(2 * (size_ + 1) > slots_.size()) grow();
+    CGAL_precondition(key[0] != empty);
+    if(4 * (size_ + 1) > 3 * slots_.size()) grow();
     for(std::size_t s = slot(key);; s = (s + 1) & (slots_.size() - 1))
     {
       Slot& x = slots_[s];
-      if(x.used && x.key == key)
+      if(x.key == key)
       {
         inserted = false;
         return x.value;
       }
-      if(!x.used)
+      if(x.key[0] == empty)
       {
-        x = Slot{key, initial, true};
+        x = Slot{key, initial};
         ++size_;
         inserted = true;
         return x.value;
@@ -73,11 +77,13 @@ public:
   }
 
 private:
+  // An empty slot has `empty` as its first id (ids are never negative): no flag,
+  // so a slot is no larger than its key and value.
+  static constexpr int empty = std::numeric_limits<int>::min();
   struct Slot
   {
     Key key;
     Value value;
-    bool used = false;
   };
 
   std::size_t slot(const Key& key) const
@@ -91,14 +97,21 @@ private:
   {
     std::vector<Slot> old;
     old.swap(slots_);
-    slots_.resize(old.empty() ? 64 : 2 * old.size());
+    slots_.assign(old.empty() ? 64 : 2 * old.size(), Slot{empty_key(), Value()});
     size_ = 0;
     for(const Slot& x : old)
-      if(x.used)
+      if(x.key[0] != empty)
       {
         bool inserted;
         find_or_insert(x.key, x.value, inserted);
       }
+  }
+
+  static Key empty_key()
+  {
+    Key k{};
+    k[0] = empty;
+    return k;
   }
 
   std::vector<Slot> slots_;   // a power of two, at most half full
