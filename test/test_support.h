@@ -19,10 +19,27 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace bodt_test {
 
 namespace fs = std::filesystem;
+
+/// A mesh from points and tetrahedra given in any orientation (each turned
+/// positive), every tetrahedron labelled 1 unless `labels` says otherwise.
+inline CGAL::BODT_3::Tet_mesh make_mesh(const std::vector<CGAL::BODT_3::Tet_mesh::Point>& points,
+                                        std::vector<std::array<int, 4>> tets, std::vector<int> labels = {})
+{
+  CGAL::BODT_3::Tet_mesh m;
+  m.points = points;
+  m.vertex_refs.assign(points.size(), 0);
+  for(auto& t : tets)
+    if(CGAL::orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
+      std::swap(t[2], t[3]);
+  m.tets = tets;
+  m.tet_labels = labels.empty() ? std::vector<int>(tets.size(), 1) : labels;
+  return m;
+}
 
 /// The running test's own scratch folder (under BODT_TEST_TMP), or a sub-folder
 /// of it, created. One folder per test, because ctest runs the tests of one

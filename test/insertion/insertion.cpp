@@ -3,6 +3,7 @@
 // dimensions), volume and validity, and their undo; the budget; and the pipeline
 // with insertion over CGAL-meshed inputs and through a file mesh.
 #include "c3t3_checks.h"
+#include "test_support.h"
 #include "inputs/generated_inputs.h"
 
 #include <CGAL/BODT_3/internal/Insertion/Bad_tet_shape.h>
@@ -40,18 +41,7 @@ CGAL::BODT_3::internal::Bad_tet_shape shape_of(Point a, Point b, Point c, Point 
   return BODT::internal::classify_bad_tet(a, b, c, d, opt).shape;
 }
 
-Tet_mesh make_mesh(const std::vector<Point>& points, std::vector<std::array<int, 4>> tets, std::vector<int> labels = {})
-{
-  Tet_mesh m;
-  m.points = points;
-  m.vertex_refs.assign(points.size(), 0);
-  for(auto& t : tets)
-    if(CGAL::orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
-      std::swap(t[2], t[3]);
-  m.tets = tets;
-  m.tet_labels = labels.empty() ? std::vector<int>(tets.size(), 1) : labels;
-  return m;
-}
+using bodt_test::make_mesh;
 
 // What a split and its undo must keep or restore.
 struct State

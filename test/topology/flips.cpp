@@ -6,6 +6,7 @@
 // labels, the worst cell raised). The flips over CGAL-meshed inputs, through the
 // whole pipeline, are tested in pipeline/smoothing.cpp.
 #include "c3t3_checks.h"
+#include "test_support.h"
 #include "exact_volumes.h"
 
 #include <CGAL/BODT_3/Tet_mesh_conversion.h>
@@ -48,21 +49,7 @@ double brute_min_sine(const Point& a, const Point& b, const Point& c, const Poin
   return q;
 }
 
-// A mesh from points and tets given in any orientation; every tet labelled `label`
-// unless `labels` says otherwise.
-Tet_mesh make_mesh(const std::vector<Point>& points, std::vector<std::array<int, 4>> tets,
-                   std::vector<int> labels = {})
-{
-  Tet_mesh m;
-  m.points = points;
-  m.vertex_refs.assign(points.size(), 0);
-  for(auto& t : tets)
-    if(CGAL::orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
-      std::swap(t[2], t[3]);
-  m.tets = tets;
-  m.tet_labels = labels.empty() ? std::vector<int>(tets.size(), 1) : labels;
-  return m;
-}
+using bodt_test::make_mesh;
 
 double worst_of(const std::vector<Point>& p, const std::vector<std::array<int, 4>>& tets)
 {
