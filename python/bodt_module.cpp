@@ -104,6 +104,11 @@ const std::vector<Option>& smoothing_options()
       {"time_limit", [](BODT::Smoothing_options& o, py::handle v) { o.time_limit = v.cast<double>(); }},
       {"convergence", [](BODT::Smoothing_options& o, py::handle v) { o.convergence = v.cast<double>(); }},
       {"freeze_bound", [](BODT::Smoothing_options& o, py::handle v) { o.freeze_bound = v.cast<double>(); }},
+      {"max_boundary_distance",
+       [](BODT::Smoothing_options& o, py::handle v) {
+         o.max_boundary_distance = v.cast<double>();
+         if(!(o.max_boundary_distance >= 0)) throw py::value_error("max_boundary_distance must be 0 (no bound) or more");
+       }},
       {"method",
        [](BODT::Smoothing_options& o, py::handle v) {
          const std::string m = v.cast<std::string>();

@@ -166,6 +166,13 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
  *     \cgalParamDescription{keep feature vertices on their curves and corners in place}
  *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_boundary_distance}
+ *     \cgalParamDescription{how far the boundary and the interfaces may go from the input's, as a fraction
+ *       of the largest side of the input surface's bounding box (like MMG's `-hausd`, relative): a step
+ *       that would take a surface vertex, or a sample of its surface triangles, farther is refused.
+ *       With B-ODT only (NODT projects onto the input's surface); 0: no bound}
+ *     \cgalParamType{`double`} \cgalParamDefault{0: no bound}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{quality_guard}
  *     \cgalParamDescription{refuse a move that worsens the worst cells around the vertex}
  *     \cgalParamType{`bool`} \cgalParamDefault{`true`}

@@ -10,6 +10,7 @@
 
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/Return_code.h>
+#include <CGAL/BODT_3/boundary_distance.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
 
@@ -92,7 +93,8 @@ const char* const smooth_description =
     "to a temporary file and renamed, and the reports appear only with the mesh.";
 
 void print_table(const BODT::Quality_report& before, const BODT::Quality_report& after,
-                 const BODT::Smoothing_result& result, std::size_t vertices)
+                 const BODT::Smoothing_result& result, std::size_t vertices, double boundary_distance,
+                 double bound)
 {
   std::printf("%-28s %12s %12s\n", "", "before", "after");
   std::printf("%-28s %12.2f %12.2f\n", "min dihedral (deg)", before.min_dihedral_deg, after.min_dihedral_deg);
@@ -112,6 +114,8 @@ void print_table(const BODT::Quality_report& before, const BODT::Quality_report&
               result.iterations, BODT::to_string(result.code), result.moved_vertices, vertices,
               result.topology.total(), result.insertion.vertices_added, result.seconds,
               (after.volume - before.volume) / before.volume);
+  std::printf("boundary and interfaces moved by %.2e of the bounding box (symmetric Hausdorff distance; %s)\n",
+              boundary_distance, bound > 0 ? printf_string("bound %.1e", bound).c_str() : "no bound");
 }
 
 int run_smooth(Smooth_options o)
@@ -164,12 +168,17 @@ int run_smooth(Smooth_options o)
   // The page draws the input beside the result.
   std::optional<BODT::Tet_mesh> input;
   if(!o.html.empty()) input = mesh;
+  const BODT::Boundary_triangles surface_before = BODT::boundary_triangles(mesh, opt.threads);
+  double distance_seconds = lap();
   Progress progress(o.quiet, opt);
   const BODT::Smoothing_result result = BODT::smooth(mesh, opt, progress);
   progress.finish();
   const double smoothing_seconds = lap();
   const BODT::Quality_report after = BODT::mesh_quality(mesh, measures);
   quality_seconds += lap();
+  const double boundary_distance =
+      BODT::relative_hausdorff_distance(surface_before, BODT::boundary_triangles(mesh, opt.threads), opt.threads);
+  distance_seconds += lap();
   if((o.feature_angle_given || o.corner_angle_given) && !result.used_tensor_voting && !o.quiet)
     std::cerr << "bodt smooth: --feature-angle and --corner-angle were not used: "
               << (opt.moving_vertices == BODT::Moving_vertices::ALL
@@ -187,9 +196,11 @@ int run_smooth(Smooth_options o)
     report["input"] = o.input;
     report["output"] = o.output;
     report["output_format"] = BODT::IO::format_name(output_format);
+    report["boundary_distance"] = boundary_distance;
     // The mesh is written after the report is made: its time is not here.
     report["process_seconds"] = {{"read", read_seconds},
                                  {"quality_before_and_after", quality_seconds},
+                                 {"boundary_distance", distance_seconds},
                                  {"smoothing", smoothing_seconds}};
     if(!o.report.empty()) side_files.stage(o.report, report.dump(1) + "\n");
   }
@@ -208,6 +219,7 @@ int run_smooth(Smooth_options o)
         {"flips", std::to_string(result.topology.total())},
         {"inserted vertices", std::to_string(result.insertion.vertices_added)},
         {"relative volume change", printf_string("%.2e", (after.volume - before.volume) / before.volume)},
+        {"boundary distance", printf_string("%.2e of the bounding box (symmetric Hausdorff)", boundary_distance)},
         {"features", features_text(o, result)},
         {"output", o.output}};
     bodt_report::Picture_options pictures;
@@ -223,7 +235,11 @@ int run_smooth(Smooth_options o)
   if(o.json)
     std::cout << report.dump() << "\n";
   else if(!o.quiet)
-    print_table(before, after, result, mesh.points.size());
+    print_table(before, after, result, mesh.points.size(), boundary_distance,
+                opt.smoothing_method == BODT::Smoothing_method::BODT &&
+                        opt.moving_vertices == BODT::Moving_vertices::ALL
+                    ? opt.max_boundary_distance
+                    : 0.0);
   return 0;
 }
 
@@ -252,6 +268,10 @@ Command add_smooth(CLI::App& command)
   command.add_option("--freeze-bound", o->smoothing.freeze_bound,
                      "a vertex whose move is shorter than this fraction of its local size stays put until a "
                      "neighbour moves (default 0.0003; 0: every vertex moves every time)")
+      ->check(CLI::NonNegativeNumber);
+  command.add_option("--max-boundary-distance", o->smoothing.max_boundary_distance,
+                     "refuse any step that takes the boundary or an interface farther than D from the input's, "
+                     "D relative to the largest side of its bounding box (default 0: no bound)")
       ->check(CLI::NonNegativeNumber);
   command.add_option("--method", o->method,
                      "bodt: every vertex moves (default); odt: interior vertices only; flips: no vertex moves, "

@@ -64,11 +64,12 @@ TEST(Cli, VersionAndHelp)
   ASSERT_EQ(run_bodt("smooth --help", out), 0);
   for(const char* option : {"--method", "--no-flips", "--no-insertion", "--max-insertions", "--format", "--quiet",
                             "--report", "--html", "--iterations", "--convergence", "--feature-angle", "--corner-angle",
-                            "--cut", "--json"})
+                            "--cut", "--json", "--max-boundary-distance"})
     EXPECT_NE(out.find(option), std::string::npos) << option;
   EXPECT_EQ(run_bodt("", out), 2);
   EXPECT_EQ(run_bodt("smooth", out), 2);
   EXPECT_EQ(run_bodt("smooth in.mesh -o out.mesh --method simplex", out), 2);
+  EXPECT_EQ(run_bodt("smooth in.mesh -o out.mesh --max-boundary-distance -0.001", out), 2);
 }
 
 TEST(Cli, QuietPrintsNothing)
@@ -82,6 +83,7 @@ TEST(Cli, QuietPrintsNothing)
   ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out2.mesh"), out, dir), 0);
   EXPECT_NE(out.find("min dihedral"), std::string::npos) << out;
   EXPECT_NE(out.find("all vertices on boundary"), std::string::npos) << out;
+  EXPECT_NE(out.find("boundary and interfaces moved by"), std::string::npos) << out;
 }
 
 // Unusable output paths end the run before the mesh is even read, with the
@@ -153,7 +155,8 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   const fs::path report = dir / "r \"1\".json";
   std::string out;
   ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --report " + q(report) +
-                         " --iterations 5 --no-insertion --max-insertions 7 --max-min-threshold 0.2 --largest-angle-threshold 125 --quiet",
+                         " --iterations 5 --no-insertion --max-insertions 7 --max-min-threshold 0.2 --largest-angle-threshold 125"
+                         " --max-boundary-distance 0.002 --quiet",
                      out, dir),
             0)
       << out;
@@ -165,6 +168,9 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_EQ(j.at("options").at("topology_optimization"), true);
   EXPECT_EQ(j.at("options").at("max_vertex_insertions"), 7);
   EXPECT_EQ(j.at("options").at("max_min_threshold"), 0.2);
+  EXPECT_EQ(j.at("options").at("max_boundary_distance"), 0.002);
+  EXPECT_GE(j.at("boundary_distance").get<double>(), 0.0);
+  EXPECT_LE(j.at("boundary_distance").get<double>(), 1e-2);
   EXPECT_EQ(j.at("options").at("method"), "bodt");
   const nlohmann::json& r = j.at("result");
   EXPECT_EQ(j.at("options").at("largest_angle_phase"), true);
@@ -210,6 +216,7 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_LE(phases, process.at("smoothing").get<double>());
   EXPECT_GT(process.at("read").get<double>(), 0.0);
   EXPECT_GT(process.at("quality_before_and_after").get<double>(), 0.0);
+  EXPECT_GE(process.at("boundary_distance").get<double>(), 0.0);
 }
 
 // Meshes that are not what they seem say so: the run prints how many vertices it

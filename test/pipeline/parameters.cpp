@@ -58,6 +58,7 @@ TEST(Parameters, ChainSetsEveryOption)
                      .time_limit(3.5)
                      .convergence(0.01)
                      .freeze_bound(0.002)
+                     .max_boundary_distance(0.004)
                      .moving_vertices(BODT::Moving_vertices::NONE)
                      .preserve_features(false)
                      .quality_guard(false)
@@ -73,6 +74,7 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_EQ(o.time_limit, 3.5);
   EXPECT_EQ(o.convergence, 0.01);
   EXPECT_EQ(o.freeze_bound, 0.002);
+  EXPECT_EQ(o.max_boundary_distance, 0.004);
   EXPECT_EQ(o.moving_vertices, BODT::Moving_vertices::NONE);
   EXPECT_FALSE(o.preserve_features);
   EXPECT_FALSE(o.quality_guard);

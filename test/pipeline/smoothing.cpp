@@ -190,6 +190,56 @@ TEST_P(Smoothing, TwentyIterationsKeepValidityVolumeFeaturesAndQuality)
   EXPECT_LE(after.tets_below_small, before.tets_below_small);
 }
 
+// max_boundary_distance: every surface vertex of the result, old or inserted, is
+// within the bound of the input's surface (exact distance to its triangles), the
+// volumes, validity and quality are kept, the surface moves less than without the
+// bound, and the result is the same on one and two threads.
+TEST_P(Smoothing, MaxBoundaryDistanceKeepsTheSurfaceVerticesNearTheInput)
+{
+  const Generated_mesh input = make_input(GetParam(), Size::small);
+  const double bound = 1e-3;
+  C3t3 bounded = input.c3t3, two_threads = input.c3t3, free = input.c3t3;
+  CGAL::bodt_optimize_mesh_3(bounded, CGAL::parameters::max_boundary_distance = bound,
+                             CGAL::parameters::number_of_threads = 1);
+  CGAL::bodt_optimize_mesh_3(two_threads, CGAL::parameters::max_boundary_distance = bound,
+                             CGAL::parameters::number_of_threads = 2);
+  CGAL::bodt_optimize_mesh_3(free);
+  EXPECT_EQ(finite_points(bounded.triangulation()), finite_points(two_threads.triangulation()));
+
+  const auto before = BODT::mesh_quality(input.c3t3);
+  const auto after = BODT::mesh_quality(bounded);
+  expect_valid(bounded.triangulation());
+  EXPECT_EQ(after.inverted_tets, 0u);
+  for(const auto& kv : before.volume_per_subdomain)
+    EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second) << "subdomain " << kv.first;
+  EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
+  EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg + kAngleSlack);
+
+  const std::vector<K::Triangle_3> surface = BODT::boundary_triangles(input.c3t3);
+  const double L = BODT::largest_bbox_side(surface);
+  using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(surface.begin(), surface.end());
+  auto cp = bounded.triangulation().geom_traits().construct_point_3_object();
+  std::size_t surface_vertices = 0;
+  double farthest = 0;
+  for(auto f = bounded.facets_in_complex_begin(); f != bounded.facets_in_complex_end(); ++f)
+    for(int k = 0; k < 4; ++k)
+      if(k != f->second)
+      {
+        ++surface_vertices;
+        farthest = (std::max)(farthest, std::sqrt(tree.squared_distance(cp(f->first->vertex(k)->point()))));
+      }
+  ASSERT_GT(surface_vertices, 0u);
+  EXPECT_LE(farthest, bound * L * (1 + 1e-9));
+
+  const double with_bound = BODT::relative_hausdorff_distance(surface, BODT::boundary_triangles(bounded));
+  const double without = BODT::relative_hausdorff_distance(surface, BODT::boundary_triangles(free));
+  if(without > 2 * bound)
+  {
+    EXPECT_LT(with_bound, without);
+  }
+}
+
 TEST_P(Smoothing, SameInputSameOutput)
 {
   const Generated_mesh input = make_input(GetParam(), Size::small);

@@ -15,6 +15,7 @@
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
 #include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
+#include <CGAL/BODT_3/internal/Smoothing/Boundary_distance_guard.h>
 #include <CGAL/BODT_3/internal/Smoothing/Local_smoothing.h>
 #include <CGAL/BODT_3/internal/Smoothing/Move_guard.h>
 #include <CGAL/BODT_3/internal/Smoothing/Smoothing_sweep.h>
@@ -513,4 +514,55 @@ TEST(LocalSmoothing, RefusesAMoveTheBudgetCannotPay)
   BI::Local_smoothing<Adapter> free(adapter, BI::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine,
                                     BODT::Tensor_voting_options());
   EXPECT_TRUE(free.move(handles[centre], BI::Vertex_kind::surface));
+}
+
+// The distance guard on a tent (two slopes meeting at a ridge of height 0.2, 2
+// wide): a point is judged by its exact distance, a triangle by its samples, so a
+// chord under the ridge whose corners lie on the input is refused; without a
+// bound everything passes.
+TEST(BoundaryDistanceGuard, JudgesPointsByDistanceAndTrianglesBetweenTheirCorners)
+{
+  const double h = 0.2;
+  const Point l0(-1, 0, 0), l1(-1, 1, 0), r0(0, 0, h), r1(0, 1, h), s0(1, 0, 0), s1(1, 1, 0);
+  std::vector<K::Triangle_3> tent = {{l0, r0, r1}, {l0, r1, l1}, {r0, s0, s1}, {r0, s1, r1}};
+  const BI::Boundary_distance_guard<K> guard(tent, 0.01);   // 0.02: the box's largest side is 2
+  ASSERT_TRUE(guard.active());
+  EXPECT_DOUBLE_EQ(guard.bound(), 0.02);
+  EXPECT_TRUE(guard.within(Point(0, 0.5, h + 0.019)));
+  EXPECT_FALSE(guard.within(Point(0, 0.5, h + 0.021)));
+  EXPECT_NEAR(guard.distance(Point(0, 0.5, h + 0.05)), 0.05, 1e-12);
+
+  BI::Boundary_distance_guard<K>::Scratch scratch;
+  // Corners on the input, the middle 0.2 below the ridge.
+  EXPECT_TRUE(guard.within(Point(-1, 0.5, 0)));
+  EXPECT_FALSE(guard.triangle_within(Point(-1, 0.5, 0), Point(1, 0.4, 0), Point(1, 0.6, 0), scratch));
+  // A corner lifted 0.01 above the ridge, the others on a slope: within.
+  EXPECT_TRUE(guard.triangle_within(Point(0, 0.5, h + 0.01), Point(0.5, 0.5, h / 2), Point(0.5, 0.7, h / 2), scratch));
+  // The same lifted by 0.03: the corner itself is out.
+  EXPECT_FALSE(guard.within(Point(0, 0.5, h + 0.03)));
+
+  const BI::Boundary_distance_guard<K> none(tent, 0);
+  EXPECT_FALSE(none.active());
+  EXPECT_TRUE(none.within(Point(5, 5, 5)));
+  EXPECT_TRUE(none.triangle_within(Point(-1, 0.5, 0), Point(1, 0.4, 0), Point(1, 0.6, 0), scratch));
+}
+
+// The other direction: the input position of a moved vertex must stay within the
+// bound of its new surface triangles.
+TEST(BoundaryDistanceGuard, InputPositionStaysCoveredByTheMovedVertexsTriangles)
+{
+  const std::vector<K::Triangle_3> square = {{Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0)},
+                                             {Point(0, 0, 0), Point(1, 1, 0), Point(0, 1, 0)}};
+  const BI::Boundary_distance_guard<K> guard(square, 0.01, {Point(0.5, 0.5, 0)});
+  const std::vector<std::pair<Point, Point>> fan = {{Point(0, 0, 0), Point(1, 0, 0)},
+                                                    {Point(1, 0, 0), Point(1, 1, 0)},
+                                                    {Point(1, 1, 0), Point(0, 1, 0)},
+                                                    {Point(0, 1, 0), Point(0, 0, 0)}};
+  // Moved within the plane, the fan still covers (0.5, 0.5, 0).
+  EXPECT_TRUE(guard.covers_origin(0, Point(0.6, 0.45, 0), fan));
+  // Moved far to a corner: its fan is a sliver that leaves the input position 0.5 away.
+  const std::vector<std::pair<Point, Point>> corner_fan = {{Point(1, 0, 0), Point(1, 0.1, 0)}};
+  EXPECT_FALSE(guard.covers_origin(0, Point(0.95, 0.05, 0), corner_fan));
+  // Vertices added after the guard was made have no input position.
+  EXPECT_TRUE(guard.covers_origin(1, Point(0.95, 0.05, 0), corner_fan));
 }

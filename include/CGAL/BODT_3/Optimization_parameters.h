@@ -51,6 +51,7 @@ BOOST_PARAMETER_NAME((largest_angle_threshold_keyword, tag) largest_angle_thresh
 BOOST_PARAMETER_NAME((number_of_threads_keyword, tag) number_of_threads_)
 BOOST_PARAMETER_NAME((feature_edge_ratio_keyword, tag) feature_edge_ratio_)
 BOOST_PARAMETER_NAME((feature_corner_ratio_keyword, tag) feature_corner_ratio_)
+BOOST_PARAMETER_NAME((max_boundary_distance_keyword, tag) max_boundary_distance_)
 BOOST_PARAMETER_NAME((progress_visitor_keyword, tag) progress_visitor_)
 CGAL_PRAGMA_DIAG_POP
 
@@ -96,6 +97,11 @@ inline void set_parameter(Smoothing_options& o, tag::number_of_threads_, long lo
 }
 inline void set_parameter(Smoothing_options& o, tag::feature_edge_ratio_, double v) { o.tensor_voting.edge_ratio = v; }
 inline void set_parameter(Smoothing_options& o, tag::feature_corner_ratio_, double v) { o.tensor_voting.corner_ratio = v; }
+inline void set_parameter(Smoothing_options& o, tag::max_boundary_distance_, double v)
+{
+  CGAL_precondition(v >= 0);
+  o.max_boundary_distance = v;
+}
 
 // The Boost.Parameter tags `bodt_optimize_mesh_3` knows: its parameters, and those
 // of CGAL's optimizers it refuses with a reason (below).
@@ -111,7 +117,7 @@ constexpr bool is_known_tag =
     std::is_same<Tag, tag::max_min_threshold_>::value || std::is_same<Tag, tag::number_of_threads_>::value ||
     std::is_same<Tag, tag::largest_angle_phase_>::value || std::is_same<Tag, tag::largest_angle_threshold_>::value ||
     std::is_same<Tag, tag::feature_edge_ratio_>::value || std::is_same<Tag, tag::feature_corner_ratio_>::value ||
-    std::is_same<Tag, tag::progress_visitor_>::value;
+    std::is_same<Tag, tag::max_boundary_distance_>::value || std::is_same<Tag, tag::progress_visitor_>::value;
 
 // Parameters of CGAL's optimizers that B-ODT has no use for are refused at compile
 // time with the reason, instead of being silently ignored.
@@ -176,6 +182,10 @@ public:
   Optimization_parameters feature_corner_ratio(double r) const
   {
     return with(internal::tag::feature_corner_ratio_(), r);
+  }
+  Optimization_parameters max_boundary_distance(double d) const
+  {
+    return with(internal::tag::max_boundary_distance_(), d);
   }
   template <class V>
   Optimization_parameters<V> progress_visitor(const V& v) const
@@ -248,6 +258,7 @@ inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::largest_a
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::number_of_threads_> number_of_threads{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::feature_edge_ratio_> feature_edge_ratio{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::feature_corner_ratio_> feature_corner_ratio{};
+inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::max_boundary_distance_> max_boundary_distance{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::progress_visitor_> progress_visitor{};
 
 } // namespace parameters

@@ -83,6 +83,7 @@ struct Iteration_stats
   std::size_t refused_breaking_hull = 0;
   std::size_t refused_changing_volume = 0;        // beyond the volume budget (Volume_budget.h)
   std::size_t refused_worsening_quality = 0;
+  std::size_t refused_leaving_surface = 0;        // beyond `max_boundary_distance` of the input's surface
   std::size_t max_min_moves = 0;      // vertices moved by the max-min fallback
   double max_relative_move = 0;       // largest move / local size
   Topology_stats topology;            // the flip pass after the sweep

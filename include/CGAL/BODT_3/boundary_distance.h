@@ -4,6 +4,8 @@
 #define CGAL_BODT_3_BOUNDARY_DISTANCE_H
 
 #include <CGAL/BODT_3/Tet_mesh.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 
 #include <CGAL/AABB_traits.h>
@@ -14,7 +16,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <vector>
 
 namespace CGAL {
@@ -23,31 +24,29 @@ namespace BODT_3 {
 using Boundary_triangles = std::vector<Tet_mesh::Kernel::Triangle_3>;
 
 /// The boundary and interface triangles of a `Tet_mesh`: faces between a mesh
-/// tetrahedron and a non-mesh one (or none), and faces between two subdomains.
-inline Boundary_triangles boundary_triangles(const Tet_mesh& mesh)
+/// tetrahedron and a non-mesh one (or none), and faces between two subdomains,
+/// each once, in the order of the tetrahedra.
+inline Boundary_triangles boundary_triangles(const Tet_mesh& mesh, int threads = 1)
 {
   const bool all_zero = mesh.all_labels_zero();
-  std::map<std::array<int, 3>, std::vector<int>> sides;   // sorted face -> labels of its tets (-1: outside)
+  const internal::Tet_face_matching faces(mesh.tets, mesh.points.size(), threads);
+  auto label = [&](std::size_t t) { return mesh.in_mesh(t, all_zero) ? mesh.tet_labels[t] : -1; };
+  Boundary_triangles out;
   for(std::size_t t = 0; t < mesh.tets.size(); ++t)
   {
-    const int label = mesh.in_mesh(t, all_zero) ? mesh.tet_labels[t] : -1;
+    const int a = label(t);
+    if(a < 0) continue;
     for(int k = 0; k < 4; ++k)
     {
-      std::array<int, 3> f;
-      for(int j = 0, m = 0; j < 4; ++j)
-        if(j != k) f[m++] = mesh.tets[t][j];
-      std::array<int, 3> key = f;
-      std::sort(key.begin(), key.end());
-      sides[key].push_back(label);
+      // A face between two labels is taken from the side of the smaller one.
+      const int m = faces.match[4 * t + static_cast<std::size_t>(k)];
+      const int b = m >= 0 ? label(static_cast<std::size_t>(m / 4)) : -1;
+      if(a == b || (b >= 0 && b < a)) continue;
+      std::array<Tet_mesh::Point, 3> p;
+      for(int j = 0, n = 0; j < 4; ++j)
+        if(j != k) p[n++] = mesh.points[mesh.tets[t][j]];
+      out.emplace_back(p[0], p[1], p[2]);
     }
-  }
-  Boundary_triangles out;
-  for(const auto& s : sides)
-  {
-    const int a = s.second[0], b = s.second.size() > 1 ? s.second[1] : -1;
-    if(a == b || (a < 0 && b < 0)) continue;
-    const auto& f = s.first;
-    out.emplace_back(mesh.points[f[0]], mesh.points[f[1]], mesh.points[f[2]]);
   }
   return out;
 }
@@ -100,27 +99,39 @@ inline double largest_bbox_side(const Boundary_triangles& t)
 /// vertices included) and measuring exact point-to-surface distances with an
 /// AABB tree. The sampling error is at most the grid spacing times the largest
 /// change in the other surface's distance, which is far below what it measures
-/// here (moves of a fraction of an edge).
-inline double hausdorff_distance(const Boundary_triangles& a, const Boundary_triangles& b, int samples = 6)
+/// here (moves of a fraction of an edge). The result does not depend on `threads`.
+inline double hausdorff_distance(const Boundary_triangles& a, const Boundary_triangles& b, int samples = 6,
+                                 int threads = 1)
 {
   using K = Tet_mesh::Kernel;
   using Primitive = CGAL::AABB_triangle_primitive<K, Boundary_triangles::const_iterator>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-  auto one_sided = [samples](const Boundary_triangles& from, const Boundary_triangles& to) {
+  internal::Thread_workers<char> workers(threads);
+  auto one_sided = [samples, &workers](const Boundary_triangles& from, const Boundary_triangles& to) {
     if(from.empty() || to.empty()) return 0.0;
     Tree tree(to.begin(), to.end());
     tree.accelerate_distance_queries();
-    double worst = 0;
-    for(const auto& t : from)
-      for(int i = 0; i <= samples; ++i)
-        for(int j = 0; i + j <= samples; ++j)
-        {
-          const double u = double(i) / samples, v = double(j) / samples, w = 1 - u - v;
-          const K::Point_3 p(u * t[0].x() + v * t[1].x() + w * t[2].x(), u * t[0].y() + v * t[1].y() + w * t[2].y(),
-                             u * t[0].z() + v * t[1].z() + w * t[2].z());
-          worst = std::max(worst, tree.squared_distance(p));
-        }
-    return std::sqrt(worst);
+    // Built before the threads query it: queries only read.
+    tree.squared_distance(from.front()[0]);
+    std::vector<double> worst(static_cast<std::size_t>(internal::block_count(from.size(), 1024)), 0.0);
+    workers.for_blocks(from.size(), [&](char&, int block, std::size_t begin, std::size_t end) {
+      double w = 0;
+      for(std::size_t k = begin; k < end; ++k)
+      {
+        const auto& t = from[k];
+        for(int i = 0; i <= samples; ++i)
+          for(int j = 0; i + j <= samples; ++j)
+          {
+            const double u = double(i) / samples, v = double(j) / samples, x = 1 - u - v;
+            const K::Point_3 p(u * t[0].x() + v * t[1].x() + x * t[2].x(),
+                               u * t[0].y() + v * t[1].y() + x * t[2].y(),
+                               u * t[0].z() + v * t[1].z() + x * t[2].z());
+            w = std::max(w, tree.squared_distance(p));
+          }
+      }
+      worst[static_cast<std::size_t>(block)] = w;
+    }, 1024);
+    return std::sqrt(*std::max_element(worst.begin(), worst.end()));
   };
   return std::max(one_sided(a, b), one_sided(b, a));
 }
@@ -128,10 +139,11 @@ inline double hausdorff_distance(const Boundary_triangles& a, const Boundary_tri
 /// The paper's relative Hausdorff distance (Table 2): the distance between the
 /// boundary surfaces before and after, divided by the largest side of the
 /// bounding box of the surface before.
-inline double relative_hausdorff_distance(const Boundary_triangles& before, const Boundary_triangles& after)
+inline double relative_hausdorff_distance(const Boundary_triangles& before, const Boundary_triangles& after,
+                                          int threads = 1)
 {
   const double L = largest_bbox_side(before);
-  return L > 0 ? hausdorff_distance(before, after) / L : 0.0;
+  return L > 0 ? hausdorff_distance(before, after, 6, threads) / L : 0.0;
 }
 
 } // namespace BODT_3

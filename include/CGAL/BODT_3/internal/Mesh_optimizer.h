@@ -9,6 +9,7 @@
 #include <CGAL/BODT_3/internal/Insertion/insertion_pass.h>
 #include <CGAL/BODT_3/internal/Mesh/Flat_view.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
+#include <CGAL/BODT_3/internal/Smoothing/Boundary_distance_guard.h>
 #include <CGAL/BODT_3/internal/Smoothing/Smoothing_sweep.h>
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
 #include <CGAL/BODT_3/internal/Topology/flip_pass.h>
@@ -140,6 +141,10 @@ public:
     // Every step that may change a subdomain's volume is paid from one budget for
     // the run (Volume_budget.h); NODT, which does not keep the volume, has none.
     if(options.smoothing_method != Smoothing_method::NODT) volume_budget_ = Volume_budget::of(mesh_, options.threads);
+    // The input's surface, for the bound on how far the surface may go (NODT
+    // projects back onto it instead; with boundary vertices fixed it stays).
+    if(options.smoothing_method == Smoothing_method::BODT && options.moving_vertices == Moving_vertices::ALL)
+      distance_ = Boundary_distance_guard<typename View::Kernel>::of(mesh_, options.max_boundary_distance);
     for(Attempt_history& h : flip_histories_) h.retries_after_moves = options.flips.retries_after_moves;
     changed_at_.assign(mesh_.number_of_vertices(), 0);
     new_star_at_.assign(mesh_.number_of_vertices(), 0);
@@ -173,7 +178,7 @@ private:
     sweep_.reset();
     phase_options_ = options;
     bounds_ = extreme_angles();
-    sweep_.emplace(mesh_, classification_, phase_options_, bounds_, &volume_budget_);
+    sweep_.emplace(mesh_, classification_, phase_options_, bounds_, &volume_budget_, &distance_);
     charge(result_.phases.setup);
   }
 
@@ -265,7 +270,7 @@ private:
                                      insertion_budget_, opt.moving_vertices == Moving_vertices::ALL,
                                      [this](Vertex_handle v) { return motion_of(v); }, vertex_id(), added_, touched_,
                                      &insertion_history_, guard_knows_sines() ? &insertion_candidates_ : nullptr,
-                                     &volume_budget_);
+                                     &volume_budget_, &distance_);
     stats.insertion.seconds = timer_.time() - start;
     insertion_budget_ -= stats.insertion.vertices_added;
     clock_ = insertion_history_.clock;
@@ -523,6 +528,7 @@ private:
   Vertex_classification classification_;
   Dihedral_bounds bounds_;
   Volume_budget volume_budget_;   // unlimited for NODT
+  Boundary_distance_guard<typename View::Kernel> distance_;   // no bound unless asked, with B-ODT
   std::optional<Smoothing_sweep<typename View::Kernel>> sweep_;
   // The run's clock, advanced at each sweep, max-min step, flip and insertion,
   // and per vertex on it: when it last moved or got a new star, and when its star

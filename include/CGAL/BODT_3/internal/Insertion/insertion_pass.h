@@ -64,6 +64,7 @@ struct Vertex_motion
 /// With a `volume_budget`, a split whose rounded point, off its boundary edge or
 /// facet, changes a subdomain's volume and the moves of the smoothing that follows
 /// are paid from it, as in the sweeps (Volume_budget.h); a split it cannot pay is undone.
+/// With a `distance` guard, the smoothing keeps surface vertices near the input's surface.
 template <class Adapter, class Motion, class Vertex_id>
 class Insertion_pass
 {
@@ -73,12 +74,15 @@ public:
   using Point = Bare_point_t<typename Adapter::Triangulation>;
   using Candidate = Candidate_cell<Cell_handle, Vertex_handle>;
 
+  using Distance_guard = Boundary_distance_guard<typename Local_smoothing<Adapter>::K>;
+
   Insertion_pass(Adapter& adapter, const Insertion_options& opt, const Dihedral_bounds& bounds,
                  Quality_measure measure, const Tensor_voting_options& voting, bool boundary_moves,
-                 const Motion& motion, const Vertex_id& vertex_id, Volume_budget* volume_budget)
+                 const Motion& motion, const Vertex_id& vertex_id, Volume_budget* volume_budget,
+                 const Distance_guard* distance = nullptr)
     : adapter_(adapter), tr_(adapter.triangulation()), opt_(opt), bounds_(bounds), measure_(measure),
       boundary_moves_(boundary_moves), motion_(motion), vertex_id_(vertex_id), volume_budget_(volume_budget),
-      smoother_(adapter, bounds, measure, voting, volume_budget)
+      smoother_(adapter, bounds, measure, voting, volume_budget, distance)
   {
     shapes_ = opt.shapes;
     shapes_.small_angle = std::asin(std::min(1.0, opt.quality_threshold)) * 180 / pi;
@@ -420,10 +424,12 @@ Insertion_stats insertion_pass(Adapter& adapter, const Insertion_options& opt, c
                                std::vector<typename Adapter::Vertex_handle>& touched,
                                Attempt_history* history = nullptr,
                                const std::vector<typename Adapter::Cell_handle>* seeds = nullptr,
-                               Volume_budget* volume_budget = nullptr)
+                               Volume_budget* volume_budget = nullptr,
+                               const typename Insertion_pass<Adapter, Motion, Vertex_id>::Distance_guard* distance =
+                                   nullptr)
 {
   Insertion_pass<Adapter, Motion, Vertex_id> pass(adapter, opt, bounds, measure, voting, boundary_moves, motion,
-                                                  vertex_id, volume_budget);
+                                                  vertex_id, volume_budget, distance);
   return pass(budget, added, touched, history, seeds);
 }
 

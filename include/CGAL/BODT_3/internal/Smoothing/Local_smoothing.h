@@ -8,6 +8,7 @@
 #include <CGAL/BODT_3/internal/Classification/Tensor_voting.h>
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
 #include <CGAL/BODT_3/internal/Moves/Vertex_star.h>
+#include <CGAL/BODT_3/internal/Smoothing/Boundary_distance_guard.h>
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
 #include <CGAL/BODT_3/internal/Moves/Volume_preserving_move.h>
 #include <CGAL/BODT_3/internal/Utilities/bare_point.h>
@@ -33,8 +34,9 @@ namespace internal {
 /// oriented (exact predicate), the star's worst mesh cell does not get worse and
 /// stays within the bounds, and the convex hull stays locally convex where it is
 /// now (as in the sweeps), and, with a `budget`, a move that may change a
-/// subdomain's volume is paid from it as in the sweeps (Move_guard); a refused
-/// move is tried at 1/2, 1/4, 1/8.
+/// subdomain's volume is paid from it as in the sweeps (Move_guard), and, with a
+/// `distance` guard, a surface vertex and its surface triangles stay near the
+/// input's surface; a refused move is tried at 1/2, 1/4, 1/8.
 template <class Adapter>
 class Local_smoothing
 {
@@ -47,9 +49,11 @@ public:
   using Vector = typename K::Vector_3;
 
   Local_smoothing(Adapter& adapter, const Dihedral_bounds& bounds, Quality_measure measure,
-                  const Tensor_voting_options& voting, Volume_budget* budget = nullptr)
+                  const Tensor_voting_options& voting, Volume_budget* budget = nullptr,
+                  const Boundary_distance_guard<K>* distance = nullptr)
     : adapter_(adapter), bounds_(bounds), measure_(measure), voting_(voting),
-      budget_(budget && budget->limited() ? budget : nullptr)
+      budget_(budget && budget->limited() ? budget : nullptr),
+      distance_(distance && distance->active() ? distance : nullptr)
   {}
 
   /// Moves `v` by its move for `kind` (a feature vertex moves along the chord
@@ -146,7 +150,17 @@ private:
          !bounds_.contains(q[0], q[1], q[2], q[3], measure_ == Quality_measure::min_dihedral_sine ? quality : 0.0))
         return false;
     }
-    return volume_within_budget(p);
+    return volume_within_budget(p) && stays_near_surface(p);
+  }
+
+  // Whether the vertex at p, and its surface triangles, are within the distance bound.
+  bool stays_near_surface(const Point& p)
+  {
+    if(!distance_ || surface_.empty()) return true;
+    if(!distance_->within(p)) return false;
+    for(const auto& f : surface_)
+      if(!distance_->triangle_within(p, f[0], f[1], scratch_)) return false;
+    return true;
   }
 
   // Whether moving the star's vertex to p costs no more than the budget allows
@@ -172,6 +186,7 @@ private:
   {
     const Tr& tr = adapter_.triangulation();
     star_.clear();
+    surface_.clear();
     star_.x0 = bare_point(tr, v);
     for(const Cell_handle& c : cells_)
     {
@@ -183,7 +198,13 @@ private:
                              bare_point(tr, c->vertex(o[2])), static_cast<int>(r.subdomain)});
       for(int j = 0; j < 4; ++j)
       {
-        if(j == i || adapter_.region(c->neighbor(j)).kind == Region_kind::mesh) continue;
+        if(j == i || adapter_.region(c->neighbor(j)) == r) continue;
+        // A boundary or interface triangle (v, x, y): the distance bound's concern.
+        std::array<Point, 2> xy;
+        for(int k = 0, m = 0; k < 4; ++k)
+          if(k != i && k != j) xy[m++] = bare_point(tr, c->vertex(k));
+        surface_.push_back(xy);
+        if(adapter_.region(c->neighbor(j)).kind == Region_kind::mesh) continue;
         // The facet opposite j, oriented with its normal out of the mesh, from v.
         const auto& f = internal::facet_opposite[j];
         for(int k = 0; k < 3; ++k)
@@ -203,6 +224,9 @@ private:
   Volume_budget* budget_;   // null: volume not priced
   Volume_change change_;
   double cost_ = 0;   // of the position judged last
+  const Boundary_distance_guard<K>* distance_;   // null: no bound on the surface
+  std::vector<std::array<Point, 2>> surface_;     // the other vertices of the surface triangles around the vertex
+  typename Boundary_distance_guard<K>::Scratch scratch_;
 };
 
 } // namespace internal

@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_INTERNAL_SMOOTHING_MOVE_GUARD_H
 
 #include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
+#include <CGAL/BODT_3/internal/Smoothing/Boundary_distance_guard.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
@@ -38,6 +39,9 @@ namespace internal {
 /// dihedral angles). Since a move only changes the cells of its star, the mesh's
 /// worst cell never gets worse, nor does either extreme angle.
 ///
+/// Surface (with a `Boundary_distance_guard`): a vertex on the boundary or an
+/// interface, and its surface triangles, stay within the bound of the input's surface.
+///
 /// A refused move is retried at 1/2, 1/4 and 1/8 of its length before giving up.
 ///
 /// What one attempt leaves behind (the star's new qualities, why it was refused)
@@ -59,7 +63,8 @@ public:
     inverts_outside_cell,
     breaks_convex_hull,
     changes_volume,
-    worsens_quality
+    worsens_quality,
+    leaves_surface
   };
 
   /// The state of one attempt, owned by the caller (one per thread).
@@ -70,15 +75,19 @@ public:
     Refusal first_refusal = Refusal::worsens_quality;   // of the full-length move
     Volume_change volume;
     double cost = 0;   // of the position judged last, in the budget's units
+    typename Boundary_distance_guard<K>::Scratch surface;
+    std::vector<std::pair<Point, Point>> corners;   // of the surface triangles around the vertex
   };
 
   /// `threads` measure the cells (`refresh`); nothing depends on their number.
-  /// `budget`, when given, prices the moves that may change a subdomain's volume.
+  /// `budget`, when given, prices the moves that may change a subdomain's volume;
+  /// `distance`, when given and active, bounds how far the surface may go.
   Move_guard(Flat_mesh<K>& mesh, bool quality_guard, const Dihedral_bounds& bounds,
              Quality_measure measure = Quality_measure::min_dihedral_sine, int threads = 1,
-             const Volume_budget* budget = nullptr)
+             const Volume_budget* budget = nullptr, const Boundary_distance_guard<K>* distance = nullptr)
     : mesh_(mesh), quality_guard_(quality_guard), bounds_(bounds), measure_(measure), workers_(threads),
-      budget_(budget && budget->limited() ? budget : nullptr)
+      budget_(budget && budget->limited() ? budget : nullptr),
+      distance_(distance && distance->active() ? distance : nullptr)
   {
     if(budget_) allowance_ = budget_->allowance();
     refresh();
@@ -90,9 +99,11 @@ public:
   /// Whether moves of `v` keep every subdomain's volume exactly (see the class comment).
   bool keeps_volume(int v) const { return !budget_ || keeps_volume_[v]; }
 
-  /// Re-reads the cell qualities and which vertices keep their volume, after the mesh's cells changed.
+  /// Re-reads the cell qualities, which vertices keep their volume and the
+  /// surface triangles around each vertex, after the mesh's cells changed.
   void refresh()
   {
+    if(distance_) surface_facets_by_vertex(mesh_, surface_begin_, surface_facets_);
     if(budget_)
     {
       const int nv = static_cast<int>(mesh_.number_of_vertices());
@@ -217,21 +228,11 @@ public:
       }
     }
     trial.last_refusal = Refusal::worsens_quality;
-    if(!quality_guard_) return true;
-
-    const double old_worst = worst_around(v);
-    trial.qualities.clear();
-    for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
+    if(quality_guard_ && !keeps_quality(v, p, trial)) return false;
+    if(distance_ && !stays_near_surface(v, p, trial))
     {
-      const int c = m.incidences[k].cell;
-      if(!m.in_mesh[c]) continue;
-      const auto& f = m.incidences[k].face;
-      const Point &a = m.points[f[0]], &b = m.points[f[1]], &d = m.points[f[2]];
-      const double q = tet_quality(measure_, p, a, b, d);
-      if(q < old_worst ||
-         !bounds_.contains(p, a, b, d, measure_ == Quality_measure::min_dihedral_sine ? q : 0.0))
-        return false;
-      trial.qualities.push_back(q);
+      trial.last_refusal = Refusal::leaves_surface;
+      return false;
     }
     return true;
   }
@@ -250,6 +251,45 @@ public:
   }
 
 private:
+  // The quality part of `accepts`: the star's worst mesh cell is not worse at p,
+  // and every mesh cell of the star is within the bounds.
+  bool keeps_quality(int v, const Point& p, Trial& trial) const
+  {
+    const auto& m = mesh_;
+    const double old_worst = worst_around(v);
+    trial.qualities.clear();
+    for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
+    {
+      const int c = m.incidences[k].cell;
+      if(!m.in_mesh[c]) continue;
+      const auto& f = m.incidences[k].face;
+      const Point &a = m.points[f[0]], &b = m.points[f[1]], &d = m.points[f[2]];
+      const double q = tet_quality(measure_, p, a, b, d);
+      if(q < old_worst ||
+         !bounds_.contains(p, a, b, d, measure_ == Quality_measure::min_dihedral_sine ? q : 0.0))
+        return false;
+      trial.qualities.push_back(q);
+    }
+    return true;
+  }
+
+  // The surface part of `accepts`: a vertex with surface triangles stays, with
+  // them, within the distance bound.
+  bool stays_near_surface(int v, const Point& p, Trial& trial) const
+  {
+    if(surface_begin_[v] == surface_begin_[v + 1]) return true;
+    if(!distance_->within(p)) return false;
+    for(int k = surface_begin_[v]; k < surface_begin_[v + 1]; ++k)
+    {
+      const auto& f = surface_facets_[k];
+      if(!distance_->triangle_within(p, mesh_.points[f[0]], mesh_.points[f[1]], trial.surface)) return false;
+    }
+    trial.corners.clear();
+    for(int k = surface_begin_[v]; k < surface_begin_[v + 1]; ++k)
+      trial.corners.emplace_back(mesh_.points[surface_facets_[k][0]], mesh_.points[surface_facets_[k][1]]);
+    return distance_->covers_origin(static_cast<std::size_t>(v), p, trial.corners);
+  }
+
   Flat_mesh<K>& mesh_;
   bool quality_guard_;
   Dihedral_bounds bounds_;
@@ -259,6 +299,9 @@ private:
   const Volume_budget* budget_;     // null: volume not priced
   double allowance_ = 0;
   std::vector<char> keeps_volume_;   // per vertex
+  const Boundary_distance_guard<K>* distance_;   // null: no bound on the surface
+  std::vector<int> surface_begin_;               // per vertex, into surface_facets_
+  std::vector<std::array<int, 2>> surface_facets_;
 };
 
 } // namespace internal

@@ -30,7 +30,8 @@ namespace internal {
 /// through `Move_guard` (with NODT, surface vertices get `Nodt_move`, projected on
 /// the boundary the mesh had when the sweeps began). After the mesh's cells change (flips, insertion), call
 /// `refresh` with the vertices whose stars changed. With a `budget`, moves that may
-/// change a subdomain's volume are priced and paid from it (Volume_budget.h).
+/// change a subdomain's volume are priced and paid from it (Volume_budget.h); with
+/// a `distance` guard, surface vertices stay near the input's surface.
 template <class K>
 class Smoothing_sweep
 {
@@ -38,9 +39,10 @@ public:
   using Vector = typename K::Vector_3;
 
   Smoothing_sweep(Flat_mesh<K>& mesh, const Vertex_classification& classification, const Smoothing_options& opt,
-                  const Dihedral_bounds& bounds, Volume_budget* budget = nullptr)
+                  const Dihedral_bounds& bounds, Volume_budget* budget = nullptr,
+                  const Boundary_distance_guard<K>* distance = nullptr)
     : mesh_(mesh), classification_(classification), opt_(opt),
-      guard_(mesh, opt.quality_guard, bounds, opt.quality_measure, opt.threads, budget), budget_(budget),
+      guard_(mesh, opt.quality_guard, bounds, opt.quality_measure, opt.threads, budget, distance), budget_(budget),
       workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1), moved_now_(mesh.number_of_vertices(), 0),
       moved_once_(mesh.number_of_vertices(), 0), cost_(mesh.number_of_vertices(), 0)
   {
@@ -105,6 +107,7 @@ public:
       stats.refused_breaking_hull += c.refused_breaking_hull;
       stats.refused_changing_volume += c.refused_changing_volume;
       stats.refused_worsening_quality += c.refused_worsening_quality;
+      stats.refused_leaving_surface += c.refused_leaving_surface;
       stats.max_relative_move = std::max(stats.max_relative_move, c.max_relative_move);
       w.counts = Iteration_stats();
     });
@@ -270,6 +273,7 @@ private:
       case Refusal::breaks_convex_hull: ++stats.refused_breaking_hull; break;
       case Refusal::changes_volume: ++stats.refused_changing_volume; break;
       case Refusal::worsens_quality: ++stats.refused_worsening_quality; break;
+      case Refusal::leaves_surface: ++stats.refused_leaving_surface; break;
       }
       return;
     }
