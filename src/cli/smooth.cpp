@@ -180,10 +180,12 @@ int run_smooth(Smooth_options o)
   const double smoothing_seconds = lap();
   const BODT::Quality_report after = BODT::mesh_quality(mesh, measures);
   quality_seconds += lap();
-  const std::optional<double> boundary_distance =
-      o.no_boundary_distance ? std::nullopt
-                             : std::optional<double>(BODT::relative_hausdorff_distance(
-                                   surface_before, BODT::boundary_triangles(mesh, opt.threads), opt.threads));
+  // Negative: not measured.
+  const double boundary_distance =
+      o.no_boundary_distance ? -1.0
+                             : BODT::relative_hausdorff_distance(surface_before,
+                                                                 BODT::boundary_triangles(mesh, opt.threads),
+                                                                 opt.threads);
   distance_seconds += lap();
   if((o.feature_angle_given || o.corner_angle_given) && !result.used_tensor_voting && !o.quiet)
     std::cerr << "bodt smooth: --feature-angle and --corner-angle were not used: "
@@ -202,7 +204,7 @@ int run_smooth(Smooth_options o)
     report["input"] = o.input;
     report["output"] = o.output;
     report["output_format"] = BODT::IO::format_name(output_format);
-    if(boundary_distance) report["boundary_distance"] = *boundary_distance;
+    if(boundary_distance >= 0) report["boundary_distance"] = boundary_distance;
     // The mesh is written after the report is made: its time is not here.
     report["process_seconds"] = {{"read", read_seconds},
                                  {"quality_before_and_after", quality_seconds},
@@ -225,9 +227,9 @@ int run_smooth(Smooth_options o)
         {"flips", std::to_string(result.topology.total())},
         {"inserted vertices", std::to_string(result.insertion.vertices_added)},
         {"relative volume change", printf_string("%.2e", (after.volume - before.volume) / before.volume)},
-        {"boundary distance", boundary_distance ? printf_string("%.2e of the bounding box (symmetric Hausdorff)",
-                                                                *boundary_distance)
-                                                : "not measured (--no-boundary-distance)"},
+        {"boundary distance", boundary_distance >= 0
+                                  ? printf_string("%.2e of the bounding box (symmetric Hausdorff)", boundary_distance)
+                                  : "not measured (--no-boundary-distance)"},
         {"features", features_text(o, result)},
         {"output", o.output}};
     bodt_report::Picture_options pictures;
@@ -243,7 +245,7 @@ int run_smooth(Smooth_options o)
   if(o.json)
     std::cout << report.dump() << "\n";
   else if(!o.quiet)
-    print_table(before, after, result, mesh.points.size(), boundary_distance.value_or(-1.0),
+    print_table(before, after, result, mesh.points.size(), boundary_distance,
                 opt.smoothing_method == BODT::Smoothing_method::BODT &&
                         opt.moving_vertices == BODT::Moving_vertices::ALL
                     ? opt.max_boundary_distance
