@@ -554,14 +554,14 @@ TEST(BoundaryDistanceGuard, InputPositionStaysCoveredByTheMovedVertexsTriangles)
   const std::vector<K::Triangle_3> square = {{Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0)},
                                              {Point(0, 0, 0), Point(1, 1, 0), Point(0, 1, 0)}};
   const BI::Boundary_distance_guard<K> guard(square, 0.01, {Point(0.5, 0.5, 0)});
-  const std::vector<std::pair<Point, Point>> fan = {{Point(0, 0, 0), Point(1, 0, 0)},
+  const std::vector<std::array<Point, 2>> fan = {{Point(0, 0, 0), Point(1, 0, 0)},
                                                     {Point(1, 0, 0), Point(1, 1, 0)},
                                                     {Point(1, 1, 0), Point(0, 1, 0)},
                                                     {Point(0, 1, 0), Point(0, 0, 0)}};
   // Moved within the plane, the fan still covers (0.5, 0.5, 0).
   EXPECT_TRUE(guard.covers_origin(0, Point(0.6, 0.45, 0), fan));
   // Moved far to a corner: its fan is a sliver that leaves the input position 0.5 away.
-  const std::vector<std::pair<Point, Point>> corner_fan = {{Point(1, 0, 0), Point(1, 0.1, 0)}};
+  const std::vector<std::array<Point, 2>> corner_fan = {{Point(1, 0, 0), Point(1, 0.1, 0)}};
   EXPECT_FALSE(guard.covers_origin(0, Point(0.95, 0.05, 0), corner_fan));
   // Vertices added after the guard was made have no input position.
   EXPECT_TRUE(guard.covers_origin(1, Point(0.95, 0.05, 0), corner_fan));

@@ -324,11 +324,14 @@ private:
     for(const auto& r : records_) order.push_back(r.vertex);
     order.insert(order.end(), own.begin(), own.end());
     for(int round = 0; round < opt_.smoothing_rounds; ++round)
-      for(Vertex_handle v : order)
+      for(std::size_t i = 0; i < order.size(); ++i)
       {
+        const Vertex_handle v = order[i];
         const Point p = point(v);
         const auto m = motion_of(v);
-        if(smoother_.move(v, m.kind, m.a, m.b) && std::find(moved_.begin(), moved_.end(), v) == moved_.end())
+        // The new vertices come first and have no input position.
+        const std::size_t id = i < records_.size() ? std::size_t(-1) : static_cast<std::size_t>(vertex_id_(v));
+        if(smoother_.move(v, m.kind, m.a, m.b, id) && std::find(moved_.begin(), moved_.end(), v) == moved_.end())
         {
           moved_.push_back(v);
           was_.push_back(p);

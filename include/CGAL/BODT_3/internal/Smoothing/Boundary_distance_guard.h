@@ -149,7 +149,7 @@ public:
     const double b2 = bound_ * bound_;
     if(CGAL::to_double(CGAL::squared_distance(x, p)) <= b2) return true;
     for(const auto& ab : corners)
-      if(CGAL::to_double(CGAL::squared_distance(x, Triangle(p, ab.first, ab.second))) <= b2) return true;
+      if(CGAL::to_double(CGAL::squared_distance(x, Triangle(p, ab[0], ab[1]))) <= b2) return true;
     return false;
   }
 

@@ -58,9 +58,13 @@ public:
 
   /// Moves `v` by its move for `kind` (a feature vertex moves along the chord
   /// between `a` and `b`, its neighbours on the curve, or by tensor voting when
-  /// they are unknown). Returns whether it moved.
-  bool move(Vertex_handle v, Vertex_kind kind, Vertex_handle a = Vertex_handle(), Vertex_handle b = Vertex_handle())
+  /// they are unknown). `id`, the vertex's index in the mesh the distance guard
+  /// was made of, checks that its input position stays near its surface triangles
+  /// (none by default). Returns whether it moved.
+  bool move(Vertex_handle v, Vertex_kind kind, Vertex_handle a = Vertex_handle(), Vertex_handle b = Vertex_handle(),
+            std::size_t id = std::size_t(-1))
   {
+    id_ = id;
     if(kind == Vertex_kind::fixed) return false;
     const Tr& tr = adapter_.triangulation();
     all_cells_.clear();
@@ -160,7 +164,7 @@ private:
     if(!distance_->within(p)) return false;
     for(const auto& f : surface_)
       if(!distance_->triangle_within(p, f[0], f[1], scratch_)) return false;
-    return true;
+    return distance_->covers_origin(id_, p, surface_);
   }
 
   // Whether moving the star's vertex to p costs no more than the budget allows
@@ -226,6 +230,7 @@ private:
   double cost_ = 0;   // of the position judged last
   const Boundary_distance_guard<K>* distance_;   // null: no bound on the surface
   std::vector<std::array<Point, 2>> surface_;     // the other vertices of the surface triangles around the vertex
+  std::size_t id_ = std::size_t(-1);             // the moving vertex's, for its input position
   typename Boundary_distance_guard<K>::Scratch scratch_;
 };
 

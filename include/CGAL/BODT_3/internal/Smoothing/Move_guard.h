@@ -76,7 +76,7 @@ public:
     Volume_change volume;
     double cost = 0;   // of the position judged last, in the budget's units
     typename Boundary_distance_guard<K>::Scratch surface;
-    std::vector<std::pair<Point, Point>> corners;   // of the surface triangles around the vertex
+    std::vector<std::array<Point, 2>> corners;   // of the surface triangles around the vertex
   };
 
   /// `threads` measure the cells (`refresh`); nothing depends on their number.
@@ -286,7 +286,7 @@ private:
     }
     trial.corners.clear();
     for(int k = surface_begin_[v]; k < surface_begin_[v + 1]; ++k)
-      trial.corners.emplace_back(mesh_.points[surface_facets_[k][0]], mesh_.points[surface_facets_[k][1]]);
+      trial.corners.push_back({mesh_.points[surface_facets_[k][0]], mesh_.points[surface_facets_[k][1]]});
     return distance_->covers_origin(static_cast<std::size_t>(v), p, trial.corners);
   }
 
