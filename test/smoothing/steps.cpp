@@ -535,16 +535,19 @@ TEST(BoundaryDistanceGuard, JudgesPointsByDistanceAndTrianglesBetweenTheirCorner
   BI::Boundary_distance_guard<K>::Scratch scratch;
   // Corners on the input, the middle 0.2 below the ridge.
   EXPECT_TRUE(guard.within(Point(-1, 0.5, 0)));
-  EXPECT_FALSE(guard.triangle_within(Point(-1, 0.5, 0), Point(1, 0.4, 0), Point(1, 0.6, 0), scratch));
+  using Fan = std::vector<std::array<Point, 2>>;
+  const std::size_t added = 99;   // a vertex with no input position
+  EXPECT_FALSE(guard.keeps_near(added, Point(-1, 0.5, 0), Fan{{Point(1, 0.4, 0), Point(1, 0.6, 0)}}, scratch));
   // A corner lifted 0.01 above the ridge, the others on a slope: within.
-  EXPECT_TRUE(guard.triangle_within(Point(0, 0.5, h + 0.01), Point(0.5, 0.5, h / 2), Point(0.5, 0.7, h / 2), scratch));
+  EXPECT_TRUE(guard.keeps_near(added, Point(0, 0.5, h + 0.01), Fan{{Point(0.5, 0.5, h / 2), Point(0.5, 0.7, h / 2)}},
+                               scratch));
   // The same lifted by 0.03: the corner itself is out.
   EXPECT_FALSE(guard.within(Point(0, 0.5, h + 0.03)));
 
   const BI::Boundary_distance_guard<K> none(tent, 0);
   EXPECT_FALSE(none.active());
   EXPECT_TRUE(none.within(Point(5, 5, 5)));
-  EXPECT_TRUE(none.triangle_within(Point(-1, 0.5, 0), Point(1, 0.4, 0), Point(1, 0.6, 0), scratch));
+  EXPECT_TRUE(none.keeps_near(added, Point(-1, 0.5, 0), Fan{{Point(1, 0.4, 0), Point(1, 0.6, 0)}}, scratch));
 }
 
 // The other direction: the input position of a moved vertex must stay within the

@@ -79,8 +79,12 @@ private:
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
 public:
-  /// What one thread's `triangle_within` calls reuse.
-  using Scratch = std::vector<typename Tree::Primitive_id>;
+  /// What one thread's calls reuse: the input triangles near a vertex's fan, and
+  /// those near one triangle of it.
+  struct Scratch
+  {
+    std::vector<typename Tree::Primitive_id> fan, near;
+  };
 
   /// No bound: every position is accepted.
   Boundary_distance_guard() = default;
@@ -153,8 +157,35 @@ public:
     return false;
   }
 
+  /// Whether vertex `v` may move to `p`: `p` within the bound, each surface
+  /// triangle around it (given by its two other corners) within the bound
+  /// (`triangle_within`), and its input position near them (`covers_origin`).
+  /// One query of the tree for the whole fan; each triangle then looks only at
+  /// the input triangles that meet its box grown by the bound (as a query of its
+  /// own would find them: the samples depend on them).
+  template <class Corners>
+  bool keeps_near(std::size_t v, const Point& p, const Corners& corners, Scratch& s) const
+  {
+    if(!active() || corners.empty()) return true;
+    if(!within(p)) return false;
+    CGAL::Bbox_3 fan = p.bbox();
+    for(const auto& ab : corners) fan += ab[0].bbox() + ab[1].bbox();
+    s.fan.clear();
+    data_->tree.all_intersected_primitives(grown(fan), std::back_inserter(s.fan));
+    for(const auto& ab : corners)
+    {
+      const CGAL::Bbox_3 box = grown(p.bbox() + ab[0].bbox() + ab[1].bbox());
+      s.near.clear();
+      for(const auto& id : s.fan)
+        if(CGAL::do_overlap(id->bbox(), box) && CGAL::do_intersect(*id, box)) s.near.push_back(id);
+      if(!triangle_within(p, ab[0], ab[1], s.near)) return false;
+    }
+    return covers_origin(v, p, corners);
+  }
+
   /// Whether the surface triangle (p, a, b), whose corner p is new or moved, is
-  /// within the bound (p itself is tested by `within`, once per vertex). The
+  /// within the bound, given in `near_` every input triangle within the bound of
+  /// some point of it (p itself is tested by `within`, once per vertex). The
   /// distance from a point of the triangle to the input's surface is the least
   /// of its distances to the input triangles near it; where the input is convex
   /// or concave there, it is the least of distances to their planes (affine in
@@ -165,20 +196,13 @@ public:
   /// vertices, the points of the sides p a and p b nearest to the input's
   /// edges, and the midpoints of those sides and the centroid; the side a b
   /// did not change. Where the input is neither convex nor concave (a saddle)
-  /// the maximum may fall between samples: bench/boundary_distance compares the
-  /// bound with an independent Hausdorff distance.
-  bool triangle_within(const Point& p, const Point& a, const Point& b, Scratch& near_) const
+  /// the maximum may fall between samples: doc/manual.md compares the bound with
+  /// the measured Hausdorff distance.
+  bool triangle_within(const Point& p, const Point& a, const Point& b,
+                       const std::vector<typename Tree::Primitive_id>& near_) const
   {
     if(!active()) return true;
     const Point c = CGAL::centroid(p, a, b);
-    // The input triangles within the bound of some point of (p, a, b): those that
-    // meet its bounding box grown by the bound (a box query is solid).
-    const CGAL::Bbox_3 box = p.bbox() + a.bbox() + b.bbox();
-    near_.clear();
-    data_->tree.all_intersected_primitives(
-        CGAL::Bbox_3(box.xmin() - bound_, box.ymin() - bound_, box.zmin() - bound_, box.xmax() + bound_,
-                     box.ymax() + bound_, box.zmax() + bound_),
-        std::back_inserter(near_));
     if(near_.empty()) return false;
     // The distance to one input triangle is convex: if the three corners are within
     // the bound of the same one, so is the whole triangle (exact, and the usual case).
@@ -224,6 +248,13 @@ public:
   }
 
 private:
+  // A box grown by the bound on every side (a box query of the tree is solid).
+  CGAL::Bbox_3 grown(const CGAL::Bbox_3& b) const
+  {
+    return CGAL::Bbox_3(b.xmin() - bound_, b.ymin() - bound_, b.zmin() - bound_, b.xmax() + bound_,
+                        b.ymax() + bound_, b.zmax() + bound_);
+  }
+
   struct Data
   {
     std::vector<Triangle> triangles;

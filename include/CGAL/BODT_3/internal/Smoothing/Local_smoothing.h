@@ -160,11 +160,7 @@ private:
   // Whether the vertex at p, and its surface triangles, are within the distance bound.
   bool stays_near_surface(const Point& p)
   {
-    if(!distance_ || surface_.empty()) return true;
-    if(!distance_->within(p)) return false;
-    for(const auto& f : surface_)
-      if(!distance_->triangle_within(p, f[0], f[1], scratch_)) return false;
-    return distance_->covers_origin(id_, p, surface_);
+    return !distance_ || distance_->keeps_near(id_, p, surface_, scratch_);
   }
 
   // Whether moving the star's vertex to p costs no more than the budget allows

@@ -277,17 +277,10 @@ private:
   // them, within the distance bound.
   bool stays_near_surface(int v, const Point& p, Trial& trial) const
   {
-    if(surface_begin_[v] == surface_begin_[v + 1]) return true;
-    if(!distance_->within(p)) return false;
-    for(int k = surface_begin_[v]; k < surface_begin_[v + 1]; ++k)
-    {
-      const auto& f = surface_facets_[k];
-      if(!distance_->triangle_within(p, mesh_.points[f[0]], mesh_.points[f[1]], trial.surface)) return false;
-    }
     trial.corners.clear();
     for(int k = surface_begin_[v]; k < surface_begin_[v + 1]; ++k)
       trial.corners.push_back({mesh_.points[surface_facets_[k][0]], mesh_.points[surface_facets_[k][1]]});
-    return distance_->covers_origin(static_cast<std::size_t>(v), p, trial.corners);
+    return distance_->keeps_near(static_cast<std::size_t>(v), p, trial.corners, trial.surface);
   }
 
   Flat_mesh<K>& mesh_;
