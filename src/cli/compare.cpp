@@ -18,7 +18,7 @@ struct Compare_options
   std::string program;
   std::vector<std::string> files;
   bool small = false, no_generated = false, no_surfaces = false, quiet = false;
-  std::string output_dir, data_dir = bodt_compare::default_data_dir();
+  std::string output_dir, data_dir = bodt_compare::default_data_dir(), stellar;
   std::size_t iterations = 20;
 };
 
@@ -38,6 +38,9 @@ int run_compare(const Compare_options& o)
   comparison.size = o.small ? "small" : "benchmark";
   comparison.iterations = options.iterations;
   comparison.machine = bodt_compare::this_machine();
+  comparison.stellar = o.stellar;
+  std::vector<bodt_compare::Method> table = bodt_compare::methods();
+  if(!o.stellar.empty()) table.push_back(bodt_compare::stellar_method(o.stellar));
 
   // Every input is built before any method runs, so that the inputs do not depend
   // on what the methods did before them.
@@ -77,13 +80,13 @@ int run_compare(const Compare_options& o)
   }
 
   for(const bodt_compare::Input& input : inputs)
-    comparison.inputs.push_back(bodt_compare::compare(input, bodt_compare::methods(), options));
+    comparison.inputs.push_back(bodt_compare::compare(input, table, options));
 
   if(o.output_dir.empty())
-    std::cout << bodt_compare::markdown(comparison, bodt_compare::methods(), "results");
+    std::cout << bodt_compare::markdown(comparison, table, "results");
   else
   {
-    bodt_compare::write_results(comparison, bodt_compare::methods(), o.output_dir);
+    bodt_compare::write_results(comparison, table, o.output_dir);
     options.log("wrote " + (std::filesystem::path(o.output_dir) / "results.md").string());
   }
   return 0;
@@ -105,7 +108,9 @@ Command add_compare(CLI::App& command, const std::string& command_line)
       "Mesh_3 with their sharp edges). With files named, only those: .mesh or .msh meshes (our methods\n"
       "only) or closed .off surfaces (meshed, every method). Reports dihedral angles, tetrahedra below 10\n"
       "and above 170 degrees, vertices added, volume change, relative Hausdorff distance of the boundary,\n"
-      "and time. The benchmark takes a long while: CGAL's optimizers are slow.");
+      "and time. The benchmark takes a long while: CGAL's optimizers are slow. With --stellar, Klingner and\n"
+      "Shewchuk's Stellar runs too, as an external program on every input with one subdomain (build it with\n"
+      "scripts/build_stellar.sh); it takes minutes per input at the benchmark size (doc/stellar.md).");
   command.add_option("MESH", o->files, "your own meshes (.mesh, .msh) or closed surfaces (.off)");
   command.add_flag("--small", o->small, "small inputs (a few thousand tetrahedra): a quick run");
   command.add_option("--output-dir", o->output_dir,
@@ -115,6 +120,8 @@ Command add_compare(CLI::App& command, const std::string& command_line)
       ->check(CLI::Range(1, 10000));
   command.add_flag("--no-generated", o->no_generated, "leave out the generated inputs and the random sphere");
   command.add_flag("--no-surfaces", o->no_surfaces, "leave out CGAL's data surfaces");
+  command.add_option("--stellar", o->stellar, "also run Stellar, this executable, on every input with one subdomain")
+      ->check(CLI::ExistingFile);
   command.add_flag("-q,--quiet", o->quiet, "no progress on stderr");
   return [o]() { return run_compare(*o); };
 }

@@ -1,10 +1,10 @@
 // Copyright (c) 2026 The CGAL BODT_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Side-by-side comparison of smoothing methods (ours and CGAL's) on the same
-// inputs, in the same run: the inputs, the table of methods, the measurements,
-// and the reports (Markdown, JSON, SVG histograms). Used by bench/compare.cpp,
-// `bodt compare` and test/cli/compare.cpp.
+// Side-by-side comparison of smoothing methods (ours, CGAL's and, when built,
+// Stellar) on the same inputs, in the same run: the inputs, the table of
+// methods, the measurements, and the reports (Markdown, JSON, SVG histograms).
+// Used by `bodt compare` (src/cli/compare.cpp) and test/cli/compare.cpp.
 #ifndef BODT_COMPARE_COMPARE_H
 #define BODT_COMPARE_COMPARE_H
 
@@ -89,8 +89,8 @@ Input file_input(const std::string& path);
 
 // -- Methods ---------------------------------------------------------------
 
-enum class Family { reference, ours, cgal };
-enum class Applies_to { every_mesh, mesh_3_output };
+enum class Family { reference, ours, cgal, external };
+enum class Applies_to { every_mesh, mesh_3_output, one_subdomain };
 
 /// How a CGAL optimizer ended, as text ("max_iteration_number_reached", ...).
 std::string outcome_name(CGAL::Mesh_optimization_return_code code);
@@ -103,7 +103,8 @@ struct Run
 
   std::size_t iterations = 0;
   std::string outcome;
-  BODT::Topology_stats flips;   // our methods: flips done
+  BODT::Topology_stats flips;        // our methods: flips done
+  double child_cpu_seconds = 0;      // an external program: the user time of its process
 };
 
 /// One row of the comparison: a name (a column of the tables), where it applies,
@@ -133,6 +134,12 @@ extern const char* const after_perturb_exude_name;      // the default pipeline 
 extern const char* const cgal_odt_name;                 // the reference for throughput ratios
 extern const char* const cgal_odt_perturb_exude_name;   // make_mesh_3 with odt()
 
+/// Klingner and Shewchuk's Stellar (`executable`), run as a child process on the
+/// input written as TetGen .node/.ele, with the boundary kept (stellar.cpp). The
+/// run throws std::runtime_error, which `compare` reports, when Stellar fails.
+Method stellar_method(const std::string& executable);
+extern const char* const stellar_name;
+
 // CGAL's methods on Mesh_3 outputs (compiled in mesh_3.cpp with the other Mesh_3 code).
 Run cgal_odt(Mesh& mesh, std::size_t iterations);
 Run cgal_lloyd(Mesh& mesh, std::size_t iterations);
@@ -144,7 +151,8 @@ Run cgal_remeshing(Mesh& mesh, std::size_t iterations);
 struct Measurement
 {
   std::string method;
-  bool applied = false;             // false: the method does not apply to this input
+  bool applied = false;             // false: the method does not apply to this input, or did not run
+  std::string not_run;              // why an external method gave no mesh: it failed, or several subdomains
   Run run;
   BODT::Quality_report quality;
   long long vertices_added = 0;
@@ -174,7 +182,8 @@ struct Options
   std::function<void(const std::string&)> log = [](const std::string&) {};
 };
 
-/// Runs every applicable method on a copy of `input` and measures the result.
+/// Runs every applicable method on a copy of `input` and measures the result. An
+/// external method that throws gets a row with `not_run` set; other errors propagate.
 Input_result compare(const Input& input, const std::vector<Method>& table, const Options& options);
 
 // -- Reports ---------------------------------------------------------------
@@ -200,6 +209,7 @@ struct Comparison
   Machine machine;
   std::vector<Input_result> inputs;
   std::vector<std::string> notes;   // inputs skipped, and why
+  std::string stellar;              // Stellar's executable as given; empty: Stellar was not run
 };
 
 /// The whole results file: tables, histograms (as `svg_dir`/NAME.svg), text.

@@ -12,6 +12,7 @@
 #include <CGAL/bodt_optimize_mesh_3.h>
 
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <type_traits>
 
@@ -319,6 +320,13 @@ Input_result compare(const Input& input, const std::vector<Method>& table, const
       result.rows.push_back(row);
       continue;
     }
+    const std::size_t subdomains = result.before.volume_per_subdomain.size();
+    if(method.applies_to == Applies_to::one_subdomain && subdomains > 1)
+    {
+      row.not_run = std::to_string(subdomains) + " subdomains: " + method.name + " knows no subdomain labels";
+      result.rows.push_back(row);
+      continue;
+    }
     options.log(input.name + ": " + method.name);
     Mesh mesh = input.mesh;
     // A randomized method (the perturber) must not depend on what ran before it.
@@ -327,11 +335,23 @@ Input_result compare(const Input& input, const std::vector<Method>& table, const
     CGAL::Real_timer wall;
     cpu.start();
     wall.start();
-    row.run = method.run(mesh, options.iterations);
+    try
+    {
+      row.run = method.run(mesh, options.iterations);
+    }
+    catch(const std::exception& e)
+    {
+      // An external program is not ours to fix: its failure is a result of the comparison.
+      if(method.family != Family::external) throw;
+      row.not_run = e.what();
+      options.log(input.name + ": " + method.name + " failed: " + row.not_run);
+      result.rows.push_back(row);
+      continue;
+    }
     cpu.stop();
     wall.stop();
     row.applied = true;
-    row.cpu_seconds = cpu.time();
+    row.cpu_seconds = cpu.time() + row.run.child_cpu_seconds;
     row.wall_seconds = wall.time();
     row.quality = quality(mesh);
     row.vertices_added = static_cast<long long>(row.quality.num_vertices) - static_cast<long long>(result.before.num_vertices);

@@ -98,6 +98,14 @@ std::string table_header(const std::vector<Method>& table)
   return head + "\n" + rule + "\n";
 }
 
+// Why a method has no result on an input, empty if it has one or does not apply.
+std::string why_not_run(const Input_result& r, const std::string& method)
+{
+  for(const Measurement& m : r.rows)
+    if(m.method == method) return m.not_run;
+  return "";
+}
+
 // One row per input, one column per method; `cell` formats an applied method.
 template <class Cell>
 std::string wide_table(const Comparison& c, const std::vector<Method>& table, Cell cell)
@@ -109,7 +117,8 @@ std::string wide_table(const Comparison& c, const std::vector<Method>& table, Ce
     for(const Method& m : table)
     {
       const Measurement* row = r.row(m.name);
-      out += " " + (row ? cell(r, *row) : std::string(not_applicable)) + " |";
+      const char* missing = why_not_run(r, m.name).empty() ? not_applicable : "not run";
+      out += " " + (row ? cell(r, *row) : std::string(missing)) + " |";
     }
     out += "\n";
   }
@@ -132,21 +141,30 @@ std::string input_sentence(const Input_result& r, const std::vector<Method>& tab
     if(odt)
       s += format("; interior-only ODT without flips reaches %.2f° / %.2f° with the boundary fixed",
                   odt->quality.min_dihedral_deg, odt->quality.max_dihedral_deg);
-    return s + " (CGAL's optimizers need a Mesh_3 domain and do not apply).\n";
+    s += " (CGAL's optimizers need a Mesh_3 domain and do not apply)";
   }
-  const double dmin = ours->quality.min_dihedral_deg - best->quality.min_dihedral_deg;
-  const double dmax = best->quality.max_dihedral_deg - ours->quality.max_dihedral_deg;
-  s += format("; the best CGAL method by minimum angle, %s, reaches %.2f° / %.2f°. Ours is %s on the minimum "
-              "angle by %.2f° and %s on the maximum angle by %.2f°",
-              best->method.c_str(), best->quality.min_dihedral_deg, best->quality.max_dihedral_deg,
-              dmin >= 0 ? "ahead" : "behind", std::abs(dmin), dmax >= 0 ? "ahead" : "behind", std::abs(dmax));
-  s += format("; it moves the boundary by %s of the bounding box against %s, and changes the volume by %.1e "
-              "against %.1e",
-              distance_text(ours->relative_hausdorff).c_str(), distance_text(best->relative_hausdorff).c_str(),
-              ours->relative_volume_change, best->relative_volume_change);
-  const double ratio = throughput_ratio(r);
-  if(std::isfinite(ratio))
-    s += format(". Its throughput is %.2f× that of CGAL ODT", ratio);
+  else
+  {
+    const double dmin = ours->quality.min_dihedral_deg - best->quality.min_dihedral_deg;
+    const double dmax = best->quality.max_dihedral_deg - ours->quality.max_dihedral_deg;
+    s += format("; the best CGAL method by minimum angle, %s, reaches %.2f° / %.2f°. Ours is %s on the minimum "
+                "angle by %.2f° and %s on the maximum angle by %.2f°",
+                best->method.c_str(), best->quality.min_dihedral_deg, best->quality.max_dihedral_deg,
+                dmin >= 0 ? "ahead" : "behind", std::abs(dmin), dmax >= 0 ? "ahead" : "behind", std::abs(dmax));
+    s += format("; it moves the boundary by %s of the bounding box against %s, and changes the volume by %.1e "
+                "against %.1e",
+                distance_text(ours->relative_hausdorff).c_str(), distance_text(best->relative_hausdorff).c_str(),
+                ours->relative_volume_change, best->relative_volume_change);
+    const double ratio = throughput_ratio(r);
+    if(std::isfinite(ratio))
+      s += format(". Its throughput is %.2f× that of CGAL ODT", ratio);
+  }
+  if(const Measurement* st = r.row(stellar_name))
+    s += format(". Stellar reaches %.2f° / %.2f° with %zu vertices (ours %zu, the input %zu), boundary distance "
+                "%s (ours %s), in %.2f CPU s (ours %.2f)",
+                st->quality.min_dihedral_deg, st->quality.max_dihedral_deg, st->quality.num_vertices,
+                ours->quality.num_vertices, r.before.num_vertices, distance_text(st->relative_hausdorff).c_str(),
+                distance_text(ours->relative_hausdorff).c_str(), st->cpu_seconds, ours->cpu_seconds);
   return s + ".\n";
 }
 
@@ -175,7 +193,7 @@ std::string losses(const Comparison& c, const std::vector<Method>& table)
       if(other->quality.tets_above_large < ours->quality.tets_above_large)
         better.push_back(format("%zu vs %zu tetrahedra above 170°", other->quality.tets_above_large,
                                 ours->quality.tets_above_large));
-      if(m.family == Family::cgal && other->relative_hausdorff < ours->relative_hausdorff)
+      if(m.family != Family::ours && other->relative_hausdorff < ours->relative_hausdorff)
         better.push_back(format("boundary distance %s vs %s", distance_text(other->relative_hausdorff).c_str(),
                                 distance_text(ours->relative_hausdorff).c_str()));
       if(m.family == Family::cgal && other->throughput() > ours->throughput())
@@ -353,6 +371,23 @@ std::string paper_section(const Comparison& c)
   return out + "\n" + sentences;
 }
 
+// Whether Stellar ran, and where it gave no mesh.
+std::string stellar_section(const Comparison& c)
+{
+  if(c.stellar.empty())
+    return c.benchmark ? "Klingner and Shewchuk's Stellar was not run. To run it beside the other methods, build it "
+                         "from its sources with `bash scripts/build_stellar.sh SRC_DIR` and pass `--stellar "
+                         "build/stellar/Stellar` (`scripts/results.sh` does when that file exists); doc/stellar.md "
+                         "has a run at the small size.\n\n"
+                       : "";
+  std::string out = "Stellar (`" + c.stellar + "`) ran as an external program on every input with one subdomain";
+  std::string missing;
+  for(const Input_result& r : c.inputs)
+    if(const std::string why = why_not_run(r, stellar_name); !why.empty())
+      missing += "- " + r.name + ": " + why + "\n";
+  return out + (missing.empty() ? ".\n\n" : "; it gave no mesh on:\n\n" + missing + "\n");
+}
+
 } // namespace
 
 std::string file_stem(const std::string& name)
@@ -414,7 +449,7 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
      << "Times are CPU (user) seconds of the process in the method's call, one core (ours with "
      << "`number_of_threads = 1`, as CGAL's sequential optimizers); the machine may have "
      << "been shared, so compare times as ratios within this file. Throughput is the input's tetrahedra times "
-     << "the iterations run, per CPU second.\n\n";
+     << "the iterations run, per CPU second. An external program's time is the user time of its process.\n\n";
 
   md << "## Inputs\n\n| input | built by | tetrahedra | vertices | min / max dihedral (°) |\n|---|---|---|---|---|\n";
   for(const Input_result& r : c.inputs)
@@ -429,7 +464,10 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
 
   md << "\n## Methods\n\n| method | applies to | call and settings |\n|---|---|---|\n";
   for(const Method& m : table)
-    md << "| " << m.name << " | " << (m.applies_to == Applies_to::every_mesh ? "every input" : "Mesh_3 outputs")
+    md << "| " << m.name << " | "
+       << (m.applies_to == Applies_to::every_mesh      ? "every input"
+           : m.applies_to == Applies_to::mesh_3_output ? "Mesh_3 outputs"
+                                                       : "inputs with one subdomain")
        << " | " << m.settings << " |\n";
   md << "\nOur methods other than NODT keep the volume of every subdomain and the boundary surface (flips "
         "change boundary facets only where they are exactly coplanar; an inserted vertex lies on the edge or face "
@@ -438,6 +476,8 @@ std::string markdown(const Comparison& c, const std::vector<Method>& table, cons
         "angle of the input gets worse. Only the pipelines with insertion add vertices, at most 5% of the input's. "
         "NODT moves boundary vertices off the surface and projects them back onto the input's boundary triangles: "
         "it does not keep the volume.\n\n";
+
+  md << stellar_section(c);
 
   md << "## What the numbers say\n\n" << summary(c, table) << "\n";
   for(const Input_result& r : c.inputs) md << input_sentence(r, table);
@@ -547,16 +587,21 @@ std::string json(const Comparison& c, const std::vector<Method>& table)
   j["methods"] = nlohmann::json::array();
   for(const Method& m : table)
     j["methods"].push_back({{"name", m.name},
-                            {"applies_to", m.applies_to == Applies_to::every_mesh ? "every_mesh" : "mesh_3_output"},
+                            {"applies_to", m.applies_to == Applies_to::every_mesh      ? "every_mesh"
+                                           : m.applies_to == Applies_to::mesh_3_output ? "mesh_3_output"
+                                                                                       : "one_subdomain"},
                             {"settings", m.settings}});
   j["notes"] = c.notes;
+  j["stellar"] = c.stellar;
   j["inputs"] = nlohmann::json::array();
   for(const Input_result& r : c.inputs)
   {
     nlohmann::json input = {{"name", r.name}, {"origin", r.origin}, {"before", r.before}};
     input["results"] = nlohmann::json::array();
     for(const Measurement& row : r.rows)
-      if(row.applied)
+      if(!row.not_run.empty())
+        input["results"].push_back({{"method", row.method}, {"not_run", row.not_run}});
+      else if(row.applied)
         input["results"].push_back({{"method", row.method},
                                     {"iterations", row.run.iterations},
                                     {"outcome", row.run.outcome},

@@ -380,6 +380,17 @@ TEST(Cli, CompareOnOwnFileHasNoBenchmarkWording)
     EXPECT_EQ(out.find(benchmark), std::string::npos) << benchmark << " in\n" << out;
 }
 
+// A --stellar path that is not there is refused before any work.
+TEST(Cli, CompareRefusesAMissingStellar)
+{
+  const fs::path dir = tmp_dir();
+  const fs::path in = write_test_mesh(dir);
+  std::string out;
+  EXPECT_NE(run_bodt("compare --quiet --stellar " + q(dir / "no_stellar") + " " + q(in), out, dir), 0) << out;
+  EXPECT_NE(out.find("--stellar"), std::string::npos) << out;
+  EXPECT_NE(out.find("no_stellar"), std::string::npos) << out;
+}
+
 namespace {
 
 std::string progress_text(bool quiet, std::size_t iterations, double time_limit, double seconds_per_sweep,

@@ -2,13 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The side-by-side comparison on one small generated input: every method gives
-// a measured row with sane values, and the reports carry every method.
+// a measured row with sane values, and the reports carry every method. Stellar:
+// a missing program and an input of two subdomains are reported, not fatal; and a
+// real run when scripts/build_stellar.sh has built it.
 #include "compare/compare.h"
+
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -129,6 +134,65 @@ TEST(CompareOnConvertedComplex, CgalOptimizersRunOnTheRebuiltRandomSphere)
     EXPECT_GT(row.quality.num_tets, 1000u) << row.method;
     EXPECT_GT(row.quality.min_dihedral_deg, 0.) << row.method;
   }
+}
+
+// A 2x2x2 grid of cubes, its inner point moved, in one subdomain or split in two.
+Input grid_input(bool two_subdomains)
+{
+  BODT::Tet_mesh m = bodt_test::cube_grid(2, [&](int i, int, int) { return two_subdomains && i < 1 ? 2 : 1; });
+  m.points[bodt_test::grid_index(2, 1, 1, 1)] = BODT::Tet_mesh::Point(1.3, 0.8, 1.2);
+  return Input{"grid", "a grid of cubes", m};
+}
+
+TEST(CompareStellar, AMissingProgramIsAResultNotAFailure)
+{
+  const Input_result r = compare(grid_input(false), {stellar_method("/nonexistent/Stellar")}, Options());
+  ASSERT_EQ(r.rows.size(), 1u);
+  EXPECT_FALSE(r.rows[0].applied);
+  EXPECT_NE(r.rows[0].not_run.find("cannot execute"), std::string::npos) << r.rows[0].not_run;
+  Comparison c;
+  c.command = "test_compare";
+  c.benchmark = false;
+  c.stellar = "/nonexistent/Stellar";
+  c.inputs.push_back(r);
+  const std::string md = markdown(c, {stellar_method("/nonexistent/Stellar")}, "results");
+  EXPECT_NE(md.find("| grid | not run |"), std::string::npos) << md;
+  EXPECT_NE(md.find("- grid: cannot execute"), std::string::npos) << md;
+  EXPECT_NE(json(c, {stellar_method("/nonexistent/Stellar")}).find("\"not_run\""), std::string::npos);
+}
+
+TEST(CompareStellar, NotRunOnSeveralSubdomains)
+{
+  const Input_result r = compare(grid_input(true), {stellar_method("/nonexistent/Stellar")}, Options());
+  ASSERT_EQ(r.rows.size(), 1u);
+  EXPECT_FALSE(r.rows[0].applied);
+  EXPECT_NE(r.rows[0].not_run.find("2 subdomains"), std::string::npos) << r.rows[0].not_run;
+}
+
+// The page of a benchmark run without --stellar says how to run Stellar.
+TEST(CompareStellar, TheBenchmarkPageSaysStellarWasNotRun)
+{
+  Comparison c;
+  c.command = "test_compare";
+  c.inputs.push_back(compare(grid_input(false), {methods().front()}, Options()));
+  const std::string md = markdown(c, {methods().front()}, "results");
+  EXPECT_NE(md.find("Stellar was not run"), std::string::npos) << md;
+  EXPECT_NE(md.find("scripts/build_stellar.sh"), std::string::npos) << md;
+}
+
+TEST(CompareStellar, ImprovesTheGridWhenBuilt)
+{
+  if(!std::filesystem::exists(BODT_STELLAR))
+    GTEST_SKIP() << BODT_STELLAR << " not found: build it with scripts/build_stellar.sh";
+  const Input_result r = compare(grid_input(false), {stellar_method(BODT_STELLAR)}, Options());
+  ASSERT_EQ(r.rows.size(), 1u);
+  const Measurement& row = r.rows[0];
+  ASSERT_TRUE(row.applied) << row.not_run;
+  EXPECT_EQ(row.quality.inverted_tets, 0u);
+  EXPECT_GE(row.quality.min_dihedral_deg, r.before.min_dihedral_deg);
+  EXPECT_LT(std::abs(row.relative_volume_change), 1e-9);
+  EXPECT_LT(row.relative_hausdorff, 1e-9);
+  EXPECT_GT(row.run.child_cpu_seconds, 0.);
 }
 
 } // namespace
