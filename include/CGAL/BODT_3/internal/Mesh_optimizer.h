@@ -13,7 +13,6 @@
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
 #include <CGAL/BODT_3/internal/Topology/flip_pass.h>
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
-#include <CGAL/BODT_3/internal/Utilities/Candidate_cell.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Utilities/id_keys.h>
 
@@ -123,7 +122,7 @@ class Mesh_optimizer
   using Vertex_handle = typename Adapter::Vertex_handle;
   using Cell_handle = typename Adapter::Cell_handle;
   using View = Flat_view<Adapter>;
-  using Candidate = Candidate_cell<Cell_handle, Vertex_handle>;
+  using Candidate = Flip_candidate<Cell_handle>;
 
 public:
   /// `classify(view, options)` gives the `Vertex_classification` of the view's vertices.
@@ -404,8 +403,9 @@ private:
       for(int v : mesh_.cells[c]) near[v] = 1;
     collect([&](std::size_t c) {
       const auto& q = mesh_.cells[c];
+      const auto& p = mesh_.points;
       return (near[q[0]] || near[q[1]] || near[q[2]] || near[q[3]]) &&
-             min_dihedral_sine(mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]) < selected;
+             min_dihedral_sine(p[q[0]], p[q[1]], p[q[2]], p[q[3]]) < selected;
     }, out, [this](std::size_t c) { return measure(c); });
   }
 
@@ -414,11 +414,9 @@ private:
   Candidate measure(std::size_t c) const
   {
     const auto& q = mesh_.cells[c];
-    Candidate m{0.0, sorted(q), view_.cells()[c], {}};
-    for(int k = 0; k < 4; ++k) m.vertices[k] = view_.vertices()[q[k]];
-    m.quality = tet_quality(phase_options_.quality_measure, mesh_.points[q[0]], mesh_.points[q[1]],
-                            mesh_.points[q[2]], mesh_.points[q[3]]);
-    return m;
+    return Candidate{tet_quality(phase_options_.quality_measure, mesh_.points[q[0]], mesh_.points[q[1]],
+                                 mesh_.points[q[2]], mesh_.points[q[3]]),
+                     sorted(q), view_.cells()[c]};
   }
 
   auto vertex_id() const

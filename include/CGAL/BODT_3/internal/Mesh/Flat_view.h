@@ -7,6 +7,7 @@
 #include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
 #include <CGAL/BODT_3/internal/Utilities/bare_point.h>
 #include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
+#include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
 
@@ -83,10 +84,10 @@ public:
     // Then each cell's vertices, region and neighbours: lookups only, in parallel.
     // The adjacency is the triangulation's (the view's facet k is opposite vertex k, as in the cell).
     const std::size_t nc = cells_.size();
-    mesh_.cells.resize(nc);
-    mesh_.in_mesh.resize(nc);
-    mesh_.subdomain.resize(nc);
-    mesh_.neighbor.resize(4 * nc);
+    resize_for_overwrite(mesh_.cells, nc);
+    resize_for_overwrite(mesh_.in_mesh, nc);
+    resize_for_overwrite(mesh_.subdomain, nc);
+    resize_for_overwrite(mesh_.neighbor, 4 * nc);
     workers_.for_each(0, static_cast<int>(nc), [&](char&, int k) {
       const Cell_handle c = cells_[static_cast<std::size_t>(k)];
       mesh_.cells[k] = {index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))};

@@ -9,7 +9,6 @@
 #include <CGAL/BODT_3/internal/Topology/Flip.h>
 #include <CGAL/BODT_3/internal/Topology/Multi_face_removal.h>
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
-#include <CGAL/BODT_3/internal/Utilities/Candidate_cell.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 
@@ -19,6 +18,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -40,6 +40,53 @@ double flip_selection_quality(Quality_measure measure, double q, const Point& p0
   if(measure == Quality_measure::min_dihedral_sine) return q;
   return min_dihedral_sine(p0, p1, p2, p3);
 }
+
+/// A cell a flip pass will try, as it was when it was queued: its quality by the
+/// pass's measure, its vertex ids sorted (the key of the attempt history, and
+/// what breaks ties, so that the order depends on the mesh alone) and its handle.
+/// 32 bytes, half a `Candidate_cell` (which keeps the vertex handles as well): on
+/// a Mesh_3 mesh nearly every cell is queued in the largest-angle phase's first pass.
+template <class Cell_handle>
+struct Flip_candidate
+{
+  double quality;
+  std::array<int, 4> ids;   // sorted
+  Cell_handle cell;
+
+  /// The candidate of cell `c`, of quality `quality`; `vertex_id(v)` gives the ids.
+  template <class Vertex_id>
+  static Flip_candidate of(Cell_handle c, double quality, const Vertex_id& vertex_id)
+  {
+    Flip_candidate e{quality, {}, c};
+    for(int k = 0; k < 4; ++k) e.ids[k] = vertex_id(c->vertex(k));
+    std::sort(e.ids.begin(), e.ids.end());
+    return e;
+  }
+
+  /// "Tried after": the worse cell goes first, ties by ids, so that a max-heap
+  /// pops the worst first.
+  bool operator<(const Flip_candidate& o) const
+  {
+    if(quality != o.quality) return quality > o.quality;
+    return ids > o.ids;
+  }
+
+  /// Whether the cell is still in triangulation `tr` with the same vertices: a
+  /// flip may have replaced it, and a new cell may live where it was.
+  template <class Tr, class Vertex_id>
+  bool still_there(const Tr& tr, const Vertex_id& vertex_id) const
+  {
+    if(!tr.tds().cells().is_used(cell)) return false;
+    std::array<int, 4> now;
+    for(int k = 0; k < 4; ++k)
+    {
+      if(tr.is_infinite(cell->vertex(k))) return false;
+      now[k] = vertex_id(cell->vertex(k));
+    }
+    std::sort(now.begin(), now.end());
+    return now == ids;
+  }
+};
 
 /// One topology pass: the cells whose quality is below the threshold
 /// (`flip_selection_quality`), worst first by `measure`, each get the best of the
@@ -63,7 +110,7 @@ class Flip_pass
 public:
   using Vertex_handle = typename Adapter::Vertex_handle;
   using Cell_handle = typename Adapter::Cell_handle;
-  using Candidate = Candidate_cell<Cell_handle, Vertex_handle>;
+  using Candidate = Flip_candidate<Cell_handle>;
 
   /// Cells evaluated together: enough to keep two to eight threads busy, few
   /// enough that a round's flips seldom meet (measured in doc/scaling.md).
@@ -82,7 +129,7 @@ public:
   {
     CGAL::Real_timer timer;
     timer.start();
-    std::priority_queue<Candidate> queue = start_queue(vertex_id, start);
+    Queue queue = start_queue(vertex_id, start);
     Topology_stats stats;
     const std::size_t max_flips = 4 * adapter_.tds().number_of_cells() + 16;   // O(1), unlike counting finite cells
     std::vector<Candidate> round;
@@ -95,7 +142,7 @@ public:
         queue.pop();
         // The history first: it does not read the cell, which is anywhere in memory.
         if(history && !history->worth_trying(e.ids)) continue;
-        if(e.still_there(adapter_.tds())) round.push_back(e);   // else replaced since it was queued
+        if(e.still_there(adapter_.triangulation(), vertex_id)) round.push_back(e);   // else replaced since queued
       }
       evaluate(round, vertex_id);
       const Flip_count round_start = flips_done_;
@@ -132,6 +179,11 @@ public:
   }
 
 private:
+  // A deque grows by blocks: a vector, exactly the size of the starting cells,
+  // would double when the pass queues more than it took, and hold the queue three
+  // times over while it copies, at the pass's largest.
+  using Queue = std::priority_queue<Candidate, std::deque<Candidate>>;
+
   // Flips done in the pass, at most `max_flips`: 32 bits keep the maps of what
   // was found useless at 12 and 20 bytes a slot (up to a billion cells).
   using Flip_count = std::uint32_t;
@@ -171,7 +223,7 @@ private:
   // cell is one, a copy would be the largest array of the pass), or every finite
   // cell measured; a heap in linear time.
   template <class Vertex_id>
-  std::priority_queue<Candidate> start_queue(const Vertex_id& vertex_id, std::vector<Candidate>* given) const
+  Queue start_queue(const Vertex_id& vertex_id, std::vector<Candidate>* given) const
   {
     CGAL_precondition(!given || measure_ == Quality_measure::min_dihedral_sine ||
                       measure_ == Quality_measure::largest_dihedral_angle);
@@ -192,7 +244,7 @@ private:
       for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
         if(const std::optional<Candidate> e = candidate(c, vertex_id)) start.push_back(*e);
     }
-    return std::priority_queue<Candidate>(std::less<Candidate>(), std::move(start));
+    return Queue(std::less<Candidate>(), std::deque<Candidate>(start.begin(), start.end()));
   }
 
   // Every cell of the round evaluated on the triangulation as it is now, concurrently.
@@ -348,8 +400,7 @@ Topology_stats flip_pass(Adapter& adapter, const Flip_options& opt, const Dihedr
                          const Vertex_id& vertex_id, std::vector<typename Adapter::Vertex_handle>& touched,
                          Attempt_history* history = nullptr,
                          Quality_measure measure = Quality_measure::min_dihedral_sine,
-                         std::vector<Candidate_cell<typename Adapter::Cell_handle,
-                                                    typename Adapter::Vertex_handle>>* candidates = nullptr,
+                         std::vector<Flip_candidate<typename Adapter::Cell_handle>>* candidates = nullptr,
                          int threads = 1)
 {
   return Flip_pass<Adapter>(adapter, opt, bounds, measure, threads)(vertex_id, touched, history, candidates);
