@@ -234,13 +234,14 @@ private:
       collect_below(opt.flips.quality_threshold, measured, [this](std::size_t c) { return measure(c); });
     // The pass reads the triangulation, not the flat view's incidences: they are
     // freed while it holds the most (its maps grow with the cells it tries) and
-    // derived again after it (by the re-read if it changed cells).
-    const bool may_flip = !known || !measured.empty();
-    if(may_flip) mesh_.release_incidences();
+    // derived again after it (by the re-read if it changed cells). A pass that
+    // starts from few cells holds little, and may flip none: it keeps them.
+    const bool release = !known || measured.size() > mesh_.cells.size() / 8;
+    if(release) mesh_.release_incidences();
     stats.topology = flip_pass(adapter_, opt.flips, bounds_, vertex_id(), touched_, &history, opt.quality_measure,
                                known ? &measured : nullptr, options_.threads);
     clock_ = history.clock;
-    if(may_flip && stats.topology.total() == 0) mesh_.build_incidences();
+    if(release && stats.topology.total() == 0) mesh_.build_incidences();
     stats.topology.seconds = timer_.time() - start;
     charge(result_.phases.flips);
     if(stats.topology.total() > 0) reread(stats);
