@@ -14,7 +14,6 @@
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
 #include <CGAL/BODT_3/internal/Topology/flip_pass.h>
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
-#include <CGAL/BODT_3/internal/Utilities/Candidate_cell.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Utilities/id_keys.h>
 
@@ -124,7 +123,7 @@ class Mesh_optimizer
   using Vertex_handle = typename Adapter::Vertex_handle;
   using Cell_handle = typename Adapter::Cell_handle;
   using View = Flat_view<Adapter>;
-  using Candidate = Candidate_cell<Cell_handle, Vertex_handle>;
+  using Candidate = Flip_candidate<Cell_handle>;
 
 public:
   /// `classify(view, options)` gives the `Vertex_classification` of the view's vertices.
@@ -233,13 +232,21 @@ private:
     added_.clear();
     // Cells outside the mesh are not measured by the guard: a pass that flips them scans.
     const bool known = guard_knows() && !opt.flips.flip_outside;
+    std::vector<Candidate> measured;   // the pass's starting cells, which it takes over
     if(known && opt.quality_measure == Quality_measure::largest_dihedral_angle)
-      collect_around(largest_angle_quality(opt.largest_angle_threshold), measured_);
+      collect_around(largest_angle_quality(opt.largest_angle_threshold), measured);
     else if(known)
-      collect_below(opt.flips.quality_threshold, measured_, [this](std::size_t c) { return measure(c); });
+      collect_below(opt.flips.quality_threshold, measured, [this](std::size_t c) { return measure(c); });
+    // The pass reads the triangulation, not the flat view's incidences: they are
+    // freed while it holds the most (its maps grow with the cells it tries) and
+    // derived again after it (by the re-read if it changed cells). A pass that
+    // starts from few cells holds little, and may flip none: it keeps them.
+    const bool release = !known || measured.size() > mesh_.cells.size() / 8;
+    if(release) mesh_.release_incidences();
     stats.topology = flip_pass(adapter_, opt.flips, bounds_, vertex_id(), touched_, &history, opt.quality_measure,
-                               known ? &measured_ : nullptr, options_.threads);
+                               known ? &measured : nullptr, options_.threads);
     clock_ = history.clock;
+    if(release && stats.topology.total() == 0) mesh_.build_incidences();
     stats.topology.seconds = timer_.time() - start;
     charge(result_.phases.flips);
     if(stats.topology.total() > 0) reread(stats);
@@ -363,12 +370,28 @@ private:
   template <class T, class Make>
   void collect_below(double threshold, std::vector<T>& out, const Make& make)
   {
-    std::vector<std::vector<T>> found(block_count(mesh_.cells.size()));
+    collect([&](std::size_t c) { return sweep_->cell_quality(static_cast<int>(c)) < threshold; }, out, make);
+  }
+
+  // The mesh cells for which `keep(c)` holds, as `make(c)` gives them, in cell
+  // order. The blocks list indices, and `out` is made at its size from them: on a
+  // mesh where nearly every cell is kept, lists of `T` per block and their
+  // concatenation, which grows by doubling, would hold it about three times.
+  template <class Keep, class T, class Make>
+  void collect(const Keep& keep, std::vector<T>& out, const Make& make)
+  {
+    std::vector<std::vector<int>> found(block_count(mesh_.cells.size()));
     for_mesh_cells([&](int b, std::size_t c) {
-      if(sweep_->cell_quality(static_cast<int>(c)) < threshold) found[static_cast<std::size_t>(b)].push_back(make(c));
+      if(keep(c)) found[static_cast<std::size_t>(b)].push_back(static_cast<int>(c));
     });
+    std::size_t n = 0;
+    for(const auto& f : found) n += f.size();
+    std::vector<int> cells;
+    cells.reserve(n);
+    for(const auto& f : found) cells.insert(cells.end(), f.begin(), f.end());
     out.clear();
-    for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());
+    out.resize(n);
+    workers_.for_each(0, static_cast<int>(n), [&](char&, int k) { out[k] = make(cells[k]); }, 4096);
   }
 
   // The mesh cells with a vertex of a cell below `threshold`, measured: where the
@@ -384,15 +407,12 @@ private:
     std::vector<char> near(mesh_.number_of_vertices(), 0);
     for(int c : bad)
       for(int v : mesh_.cells[c]) near[v] = 1;
-    std::vector<std::vector<Candidate>> found(block_count(mesh_.cells.size()));
-    for_mesh_cells([&](int b, std::size_t c) {
+    collect([&](std::size_t c) {
       const auto& q = mesh_.cells[c];
-      if((near[q[0]] || near[q[1]] || near[q[2]] || near[q[3]]) &&
-         min_dihedral_sine(mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]) < selected)
-        found[static_cast<std::size_t>(b)].push_back(measure(c));
-    });
-    out.clear();
-    for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());
+      const auto& p = mesh_.points;
+      return (near[q[0]] || near[q[1]] || near[q[2]] || near[q[3]]) &&
+             min_dihedral_sine(p[q[0]], p[q[1]], p[q[2]], p[q[3]]) < selected;
+    }, out, [this](std::size_t c) { return measure(c); });
   }
 
   // A cell for the flip pass, measured from the flat points in the cell's vertex
@@ -400,11 +420,9 @@ private:
   Candidate measure(std::size_t c) const
   {
     const auto& q = mesh_.cells[c];
-    Candidate m{0.0, sorted(q), view_.cells()[c], {}};
-    for(int k = 0; k < 4; ++k) m.vertices[k] = view_.vertices()[q[k]];
-    m.quality = tet_quality(phase_options_.quality_measure, mesh_.points[q[0]], mesh_.points[q[1]],
-                            mesh_.points[q[2]], mesh_.points[q[3]]);
-    return m;
+    return Candidate{tet_quality(phase_options_.quality_measure, mesh_.points[q[0]], mesh_.points[q[1]],
+                                 mesh_.points[q[2]], mesh_.points[q[3]]),
+                     sorted(q), view_.cells()[c]};
   }
 
   auto vertex_id() const
@@ -537,7 +555,6 @@ private:
   std::vector<std::size_t> changed_at_, new_star_at_;
   std::array<Attempt_history, 2> flip_histories_;   // by the minimum sine, by the largest angle
   Attempt_history insertion_history_;
-  std::vector<Candidate> measured_;                  // the flip pass's starting cells
   std::vector<Cell_handle> insertion_candidates_;    // the insertion pass's
   std::vector<Vertex_handle> touched_;               // vertices whose star the last pass changed
   std::vector<Added_vertex<Vertex_handle>> added_;   // vertices the last insertion pass added

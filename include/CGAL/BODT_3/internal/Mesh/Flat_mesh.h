@@ -125,6 +125,16 @@ struct Flat_mesh
       for(int k = hull_begin[v]; k < hull_begin[v + 1]; ++k) checked_by[fill[vertex_hull_checks[k][3]]++] = v;
   }
 
+  /// Frees the incidences and boundary facets per vertex: a pass that changes
+  /// the cells reads neither, and `build_incidences()` derives them again after it.
+  void release_incidences()
+  {
+    std::vector<int>().swap(incidence_begin);
+    std::vector<Incidence>().swap(incidences);
+    std::vector<int>().swap(boundary_begin);
+    std::vector<std::array<int, 2>>().swap(boundary_facets);
+  }
+
   /// Fills `star` with the mesh cells around `v` and the boundary facets through it.
   void gather_star(int v, Vertex_star<K>& star) const
   {

@@ -7,6 +7,7 @@
 #include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
 #include <CGAL/BODT_3/internal/Utilities/bare_point.h>
 #include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
+#include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
 
@@ -75,23 +76,25 @@ public:
         mesh_.points.push_back(cp(v->point()));
       }
     cells_.clear();
-    cell_index_.reset(tr.tds().number_of_cells());
+    // Only the neighbours are looked up by cell: the index lives while they are read.
+    Handle_index_map<Cell_handle> cell_index;
+    cell_index.reset(tr.tds().number_of_cells());
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
-    cell_index_.insert_all(cells_, workers_);
+    cell_index.insert_all(cells_, workers_);
     // Then each cell's vertices, region and neighbours: lookups only, in parallel.
     // The adjacency is the triangulation's (the view's facet k is opposite vertex k, as in the cell).
     const std::size_t nc = cells_.size();
-    mesh_.cells.resize(nc);
-    mesh_.in_mesh.resize(nc);
-    mesh_.subdomain.resize(nc);
-    mesh_.neighbor.resize(4 * nc);
-    workers_.for_each(0, static_cast<int>(nc), [this](char&, int k) {
+    resize_for_overwrite(mesh_.cells, nc);
+    resize_for_overwrite(mesh_.in_mesh, nc);
+    resize_for_overwrite(mesh_.subdomain, nc);
+    resize_for_overwrite(mesh_.neighbor, 4 * nc);
+    workers_.for_each(0, static_cast<int>(nc), [&](char&, int k) {
       const Cell_handle c = cells_[static_cast<std::size_t>(k)];
       mesh_.cells[k] = {index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))};
       const auto r = adapter_.region(c);
       mesh_.in_mesh[k] = r.kind == Region_kind::mesh ? 1 : 0;
       mesh_.subdomain[k] = r.kind == Region_kind::mesh ? static_cast<int>(r.subdomain) : 0;
-      for(int i = 0; i < 4; ++i) mesh_.neighbor[4 * static_cast<std::size_t>(k) + i] = cell_index_.find(c->neighbor(i));
+      for(int i = 0; i < 4; ++i) mesh_.neighbor[4 * static_cast<std::size_t>(k) + i] = cell_index.find(c->neighbor(i));
     }, 1024);
     mesh_.hull_checks.clear();
     if(adapter_.convex_hull()) add_hull_checks();
@@ -148,7 +151,6 @@ private:
   std::vector<Vertex_handle> handles_;
   std::vector<Cell_handle> cells_;
   Handle_index_map<Vertex_handle> index_;
-  Handle_index_map<Cell_handle> cell_index_;
 };
 
 /// What a `Mesh_complex_3_in_triangulation_3` knows of its features: vertex

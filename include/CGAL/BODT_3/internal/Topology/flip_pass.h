@@ -9,7 +9,6 @@
 #include <CGAL/BODT_3/internal/Topology/Flip.h>
 #include <CGAL/BODT_3/internal/Topology/Multi_face_removal.h>
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
-#include <CGAL/BODT_3/internal/Utilities/Candidate_cell.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 
@@ -18,6 +17,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -39,6 +40,53 @@ double flip_selection_quality(Quality_measure measure, double q, const Point& p0
   if(measure == Quality_measure::min_dihedral_sine) return q;
   return min_dihedral_sine(p0, p1, p2, p3);
 }
+
+/// A cell a flip pass will try, as it was when it was queued: its quality by the
+/// pass's measure, its vertex ids sorted (the key of the attempt history, and
+/// what breaks ties, so that the order depends on the mesh alone) and its handle.
+/// 32 bytes, half a `Candidate_cell` (which keeps the vertex handles as well): on
+/// a Mesh_3 mesh nearly every cell is queued in the largest-angle phase's first pass.
+template <class Cell_handle>
+struct Flip_candidate
+{
+  double quality;
+  std::array<int, 4> ids;   // sorted
+  Cell_handle cell;
+
+  /// The candidate of cell `c`, of quality `quality`; `vertex_id(v)` gives the ids.
+  template <class Vertex_id>
+  static Flip_candidate of(Cell_handle c, double quality, const Vertex_id& vertex_id)
+  {
+    Flip_candidate e{quality, {}, c};
+    for(int k = 0; k < 4; ++k) e.ids[k] = vertex_id(c->vertex(k));
+    std::sort(e.ids.begin(), e.ids.end());
+    return e;
+  }
+
+  /// "Tried after": the worse cell goes first, ties by ids, so that a max-heap
+  /// pops the worst first.
+  bool operator<(const Flip_candidate& o) const
+  {
+    if(quality != o.quality) return quality > o.quality;
+    return ids > o.ids;
+  }
+
+  /// Whether the cell is still in triangulation `tr` with the same vertices: a
+  /// flip may have replaced it, and a new cell may live where it was.
+  template <class Tr, class Vertex_id>
+  bool still_there(const Tr& tr, const Vertex_id& vertex_id) const
+  {
+    if(!tr.tds().cells().is_used(cell)) return false;
+    std::array<int, 4> now;
+    for(int k = 0; k < 4; ++k)
+    {
+      if(tr.is_infinite(cell->vertex(k))) return false;
+      now[k] = vertex_id(cell->vertex(k));
+    }
+    std::sort(now.begin(), now.end());
+    return now == ids;
+  }
+};
 
 /// One topology pass: the cells whose quality is below the threshold
 /// (`flip_selection_quality`), worst first by `measure`, each get the best of the
@@ -62,7 +110,7 @@ class Flip_pass
 public:
   using Vertex_handle = typename Adapter::Vertex_handle;
   using Cell_handle = typename Adapter::Cell_handle;
-  using Candidate = Candidate_cell<Cell_handle, Vertex_handle>;
+  using Candidate = Flip_candidate<Cell_handle>;
 
   /// Cells evaluated together: enough to keep two to eight threads busy, few
   /// enough that a round's flips seldom meet (measured in doc/scaling.md).
@@ -77,11 +125,11 @@ public:
   /// Runs the pass; see `flip_pass` for the arguments.
   template <class Vertex_id>
   Topology_stats operator()(const Vertex_id& vertex_id, std::vector<Vertex_handle>& touched,
-                            Attempt_history* history, const std::vector<Candidate>* start)
+                            Attempt_history* history, std::vector<Candidate>* start)
   {
     CGAL::Real_timer timer;
     timer.start();
-    std::priority_queue<Candidate> queue = start_queue(vertex_id, start);
+    Queue queue = start_queue(vertex_id, start);
     Topology_stats stats;
     const std::size_t max_flips = 4 * adapter_.tds().number_of_cells() + 16;   // O(1), unlike counting finite cells
     std::vector<Candidate> round;
@@ -94,10 +142,10 @@ public:
         queue.pop();
         // The history first: it does not read the cell, which is anywhere in memory.
         if(history && !history->worth_trying(e.ids)) continue;
-        if(e.still_there(adapter_.tds())) round.push_back(e);   // else replaced since it was queued
+        if(e.still_there(adapter_.triangulation(), vertex_id)) round.push_back(e);   // else replaced since queued
       }
       evaluate(round, vertex_id);
-      const std::size_t round_start = flips_done_;
+      const Flip_count round_start = flips_done_;
       for(std::size_t k = 0; k < round.size() && stats.total() < max_flips; ++k)
       {
         Evaluation& ev = evaluations_[k];
@@ -131,6 +179,15 @@ public:
   }
 
 private:
+  // A deque grows by blocks: a vector, exactly the size of the starting cells,
+  // would double when the pass queues more than it took, and hold the queue three
+  // times over while it copies, at the pass's largest.
+  using Queue = std::priority_queue<Candidate, std::deque<Candidate>>;
+
+  // Flips done in the pass, at most `max_flips`: 32 bits keep the maps of what
+  // was found useless at 12 and 20 bytes a slot (up to a billion cells).
+  using Flip_count = std::uint32_t;
+
   // What evaluating one cell found: its best flip, the edges and faces found
   // useless, and the ids of the vertices whose stars it read (its own and the
   // apexes across its faces).
@@ -162,23 +219,24 @@ private:
     return Candidate::of(c, q, vertex_id);
   }
 
-  // The starting cells: those given, or every finite cell measured; a heap in linear time.
+  // The starting cells: those given, taken over (on a mesh where nearly every
+  // cell is one, a copy would be the largest array of the pass), or every finite
+  // cell measured; a heap in linear time.
   template <class Vertex_id>
-  std::priority_queue<Candidate> start_queue(const Vertex_id& vertex_id, const std::vector<Candidate>* given) const
+  Queue start_queue(const Vertex_id& vertex_id, std::vector<Candidate>* given) const
   {
     CGAL_precondition(!given || measure_ == Quality_measure::min_dihedral_sine ||
                       measure_ == Quality_measure::largest_dihedral_angle);
     std::vector<Candidate> start;
     if(given)
     {
-      for(const Candidate& m : *given)
-      {
+      start.swap(*given);
+      start.erase(std::remove_if(start.begin(), start.end(), [&](const Candidate& m) {
         CGAL_assertion(ctx_.flippable(adapter_.region(m.cell)));
         const Cell_handle c = m.cell;
-        if(flip_selection_quality(measure_, m.quality, ctx_.point(c->vertex(0)), ctx_.point(c->vertex(1)),
-                                  ctx_.point(c->vertex(2)), ctx_.point(c->vertex(3))) < opt_.quality_threshold)
-          start.push_back(m);
-      }
+        return !(flip_selection_quality(measure_, m.quality, ctx_.point(c->vertex(0)), ctx_.point(c->vertex(1)),
+                                        ctx_.point(c->vertex(2)), ctx_.point(c->vertex(3))) < opt_.quality_threshold);
+      }), start.end());
     }
     else
     {
@@ -186,7 +244,7 @@ private:
       for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
         if(const std::optional<Candidate> e = candidate(c, vertex_id)) start.push_back(*e);
     }
-    return std::priority_queue<Candidate>(std::less<Candidate>(), std::move(start));
+    return Queue(std::less<Candidate>(), std::deque<Candidate>(start.begin(), start.end()));
   }
 
   // Every cell of the round evaluated on the triangulation as it is now, concurrently.
@@ -222,7 +280,7 @@ private:
       for(int j = i + 1; j < 4; ++j)
       {
         const std::array<int, 2> key{std::min(id[i], id[j]), std::max(id[i], id[j])};
-        const std::size_t* known = useless_edges_.find(key);
+        const Flip_count* known = useless_edges_.find(key);
         if(known && still_useless(*known, {id[i], id[j]})) continue;
         // Only the best proposal for this cell counts: what cannot beat the best so
         // far is cut short, and then says nothing about the edge's own worth.
@@ -244,7 +302,7 @@ private:
       const int apex_id = vertex_id(apex);
       ev.neighbourhood[4 + i] = apex_id;
       key[3] = std::min(apex_id, id[i]);
-      const std::size_t* known = useless_faces_.find(key);
+      const Flip_count* known = useless_faces_.find(key);
       if(known && still_useless(*known, {id[0], id[1], id[2], id[3], apex_id})) continue;
       if(w.face_removal(ctx_, c, i, candidate) && candidate.improves())
         consider();
@@ -254,7 +312,7 @@ private:
   }
 
   // Marks what an evaluation found useless, as of the state it was judged on.
-  void record_useless(const Evaluation& ev, std::size_t when)
+  void record_useless(const Evaluation& ev, Flip_count when)
   {
     for(const auto& key : ev.useless_edges) useless_edges_.assign(key, when);
     for(const auto& key : ev.useless_faces) useless_faces_.assign(key, when);
@@ -304,14 +362,14 @@ private:
   // that cell's vertices: an evaluation none of whose vertices was touched since
   // it was made still holds.
   template <class Ids>
-  bool touched_since(std::size_t when, const Ids& ids) const
+  bool touched_since(Flip_count when, const Ids& ids) const
   {
     for(int id : ids)
       if(id >= 0 && id < static_cast<int>(touched_at_.size()) && touched_at_[id] > when) return true;
     return false;
   }
 
-  bool still_useless(std::size_t when, std::initializer_list<int> ids) const { return !touched_since(when, ids); }
+  bool still_useless(Flip_count when, std::initializer_list<int> ids) const { return !touched_since(when, ids); }
 
   Adapter& adapter_;
   const Flip_options& opt_;
@@ -320,10 +378,10 @@ private:
   Thread_workers<Evaluator> evaluators_;
   std::vector<Evaluation> evaluations_;
   std::vector<Cell_handle> created_;
-  Id_tuple_map<2, std::size_t> useless_edges_;
-  Id_tuple_map<4, std::size_t> useless_faces_;   // face ids and apex
-  std::vector<std::size_t> touched_at_;          // per vertex id: flips done when a flip last touched it
-  std::size_t flips_done_ = 0;
+  Id_tuple_map<2, Flip_count> useless_edges_;
+  Id_tuple_map<4, Flip_count> useless_faces_;   // face ids and apex
+  std::vector<Flip_count> touched_at_;          // per vertex id: flips done when a flip last touched it
+  Flip_count flips_done_ = 0;
 };
 
 /// One flip pass (`Flip_pass`) on the triangulation behind `adapter`, on
@@ -333,16 +391,16 @@ private:
 /// `history` (optional) lets the pass skip cells tried in vain before whose
 /// neighbourhood has not changed since. `candidates` (optional, with the minimum
 /// dihedral sine or the largest angle as measure) are the cells the pass may start
-/// from, flippable and measured; it starts from those below the threshold (the
-/// caller may know them without measuring every cell, or choose where to work).
-/// By default every finite cell is measured.
+/// from, flippable and measured; it takes them over (leaving the vector empty)
+/// and starts from those below the threshold (the caller may know them without
+/// measuring every cell, or choose where to work). By default every finite cell
+/// is measured.
 template <class Adapter, class Vertex_id>
 Topology_stats flip_pass(Adapter& adapter, const Flip_options& opt, const Dihedral_bounds& bounds,
                          const Vertex_id& vertex_id, std::vector<typename Adapter::Vertex_handle>& touched,
                          Attempt_history* history = nullptr,
                          Quality_measure measure = Quality_measure::min_dihedral_sine,
-                         const std::vector<Candidate_cell<typename Adapter::Cell_handle,
-                                                          typename Adapter::Vertex_handle>>* candidates = nullptr,
+                         std::vector<Flip_candidate<typename Adapter::Cell_handle>>* candidates = nullptr,
                          int threads = 1)
 {
   return Flip_pass<Adapter>(adapter, opt, bounds, measure, threads)(vertex_id, touched, history, candidates);

@@ -10,7 +10,7 @@ namespace CGAL {
 namespace BODT_3 {
 namespace internal {
 
-/// A cell a pass (flips, insertion) will try, as it was when it was queued: its
+/// A cell the insertion pass will try, as it was when it was queued: its
 /// quality by the pass's measure, its vertex ids sorted (the key of the attempt
 /// history, and what breaks ties, so that the order depends on the mesh alone),
 /// its handle and its vertices (a later change may have replaced it).
