@@ -138,12 +138,12 @@ inline double hausdorff_distance(const Boundary_triangles& a, const Boundary_tri
 
 /// The paper's relative Hausdorff distance (Table 2): the distance between the
 /// boundary surfaces before and after, divided by the largest side of the
-/// bounding box of the surface before.
+/// bounding box of the surface before; `samples` as for `hausdorff_distance`.
 inline double relative_hausdorff_distance(const Boundary_triangles& before, const Boundary_triangles& after,
-                                          int threads = 1)
+                                          int threads = 1, int samples = 6)
 {
   const double L = largest_bbox_side(before);
-  return L > 0 ? hausdorff_distance(before, after, 6, threads) / L : 0.0;
+  return L > 0 ? hausdorff_distance(before, after, samples, threads) / L : 0.0;
 }
 
 } // namespace BODT_3
