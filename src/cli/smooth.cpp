@@ -303,7 +303,7 @@ Command add_smooth(CLI::App& command)
       ->check(CLI::Range(0., 1.));
   command.add_flag("--no-boundary-distance", o->no_boundary_distance,
                    "do not measure how far the boundary and interfaces moved (the symmetric Hausdorff distance "
-                   "printed and reported; on a large mesh about 5% of a one-thread run)");
+                   "printed and reported; about 7% of a one-thread run on a large mesh)");
   command.add_flag("--no-largest-angle-phase", o->no_largest_angle_phase,
                    "no final phase lowering the largest angles (decided by the largest dihedral angle, then by "
                    "the minimum sine again)");
