@@ -97,8 +97,7 @@ public:
     if(!(relative_bound > 0) || input_surface.empty()) return;
     CGAL::Bbox_3 box;
     for(const Triangle& t : input_surface) box += t.bbox();
-    length_ = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
-    bound_ = relative_bound * length_;
+    bound_ = relative_bound * (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
     data_ = std::make_shared<Data>(std::move(input_surface), std::move(origin));
   }
 
@@ -123,8 +122,6 @@ public:
   bool active() const { return data_ != nullptr; }
   /// The bound, absolute (0 without one).
   double bound() const { return bound_; }
-  /// The largest side of the input surface's bounding box (0 without a bound).
-  double length() const { return length_; }
 
   /// The distance from `q` to the input's surface.
   double distance(const Point& q) const
@@ -287,7 +284,6 @@ private:
   std::shared_ptr<const Data> data_;   // shared by copies: the tree is built once per run
 
   double bound_ = 0;
-  double length_ = 0;
 };
 
 } // namespace internal
