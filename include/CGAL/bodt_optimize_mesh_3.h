@@ -189,6 +189,15 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
  *     \cgalParamDescription{at most this many new vertices; negative: 5% of the input's vertices}
  *     \cgalParamType{`long long`} \cgalParamDefault{-1}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_contraction}
+ *     \cgalParamDescription{in the last phase, vertices inside a subdomain or on a flat part of the surface
+ *       are removed by contracting an edge where that raises the worst cell around them}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_vertex_removals}
+ *     \cgalParamDescription{at most this many vertices removed; negative: 5% of the input's vertices}
+ *     \cgalParamType{`long long`} \cgalParamDefault{-1}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{max_min_threshold}
  *     \cgalParamDescription{minimum dihedral sine below which a cell's vertices take max-min steps after
  *       the flips; 0: off}

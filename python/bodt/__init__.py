@@ -91,6 +91,9 @@ def smooth(points, tets=None, labels=None, triangles=None, triangle_labels=None,
     topology_optimization (True): flips after each sweep.
     vertex_insertion (True): vertices inserted at spades, caps, slivers and wedges.
     max_vertex_insertions (-1: 5% of the input's vertices): at most this many.
+    edge_contraction (False): in the last phase, vertices inside a subdomain or on
+        a flat part of the surface removed where that raises the worst cell.
+    max_vertex_removals (-1: 5% of the input's vertices): at most this many.
     max_min_threshold (0.34): max-min steps at the vertices of cells whose smallest
         dihedral sine is below this (about 20 degrees); 0: none.
     largest_angle_phase (True): after the main phase, one decided by the largest

@@ -110,10 +110,10 @@ void print_table(const BODT::Quality_report& before, const BODT::Quality_report&
   std::printf("%-28s %12.4f %12.4f\n", "mean radius ratio", before.mean_radius_ratio, after.mean_radius_ratio);
   std::printf("%-28s %12zu %12zu\n", "tetrahedra", before.num_tets, after.num_tets);
   std::printf("%-28s %12zu %12zu\n", "inverted or flat tets", before.inverted_tets, after.inverted_tets);
-  std::printf("%zu sweeps (%s), %zu of %zu vertices moved, %zu flips, %zu vertices inserted, %.2f s; "
+  std::printf("%zu sweeps (%s), %zu of %zu vertices moved, %zu flips, %zu vertices inserted, %zu removed, %.2f s; "
               "volume change %.2e\n",
               result.iterations, BODT::to_string(result.code), result.moved_vertices, vertices,
-              result.topology.total(), result.insertion.vertices_added, result.seconds,
+              result.topology.total(), result.insertion.vertices_added, result.contraction.contractions, result.seconds,
               (after.volume - before.volume) / before.volume);
   if(boundary_distance >= 0)   // negative: not measured
     std::printf("boundary and interfaces moved by %.2e of the bounding box (symmetric Hausdorff distance; %s)\n",
@@ -294,6 +294,12 @@ Command add_smooth(CLI::App& command)
   command.add_flag("--no-guard", o->no_guard, "accept every valid move, even one that worsens the worst angles");
   command.add_flag("--no-flips", o->no_flips, "no topology optimization (flips)");
   command.add_flag("--no-insertion", o->no_insertion, "no vertex insertion");
+  command.add_flag("--contraction,!--no-contraction", o->smoothing.edge_contraction,
+                   "edge contraction: remove vertices inside a subdomain or on a flat part of the surface where "
+                   "that raises the worst tetrahedron around them (default: off)");
+  command.add_option("--max-removals", o->smoothing.max_vertex_removals,
+                     "remove at most N vertices by edge contraction (default -1: 5% of the input's vertices)")
+      ->check(CLI::Range(-1LL, 1000000000LL));
   command.add_option("--max-insertions", o->smoothing.max_vertex_insertions,
                      "insert at most N vertices (default -1: 5% of the input's vertices)")
       ->check(CLI::Range(-1LL, 1000000000LL));

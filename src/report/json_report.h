@@ -80,6 +80,13 @@ inline void to_json(nlohmann::json& j, const Insertion_stats& s)
                      {"seconds", s.seconds}};
 }
 
+inline void to_json(nlohmann::json& j, const Contraction_stats& s)
+{
+  j = nlohmann::json{{"contractions", s.contractions},
+                     {"boundary_contractions", s.boundary_contractions},
+                     {"seconds", s.seconds}};
+}
+
 inline void to_json(nlohmann::json& j, const Iteration_stats& s)
 {
   j = nlohmann::json{{"iteration", s.iteration},
@@ -97,6 +104,7 @@ inline void to_json(nlohmann::json& j, const Iteration_stats& s)
                      {"max_min_moves", s.max_min_moves},
                      {"max_relative_move", s.max_relative_move},
                      {"topology", s.topology},
+                     {"contraction", s.contraction},
                      {"insertion", s.insertion},
                      {"sweep_seconds", s.sweep_seconds},
                      {"max_min_seconds", s.max_min_seconds},
@@ -107,8 +115,8 @@ inline void to_json(nlohmann::json& j, const Iteration_stats& s)
 inline void to_json(nlohmann::json& j, const Phase_seconds& p)
 {
   j = nlohmann::json{{"conversion", p.conversion}, {"setup", p.setup},     {"sweeps", p.sweeps},
-                     {"flips", p.flips},           {"max_min", p.max_min}, {"insertion", p.insertion},
-                     {"reread", p.reread}};
+                     {"flips", p.flips},           {"max_min", p.max_min}, {"contraction", p.contraction},
+                     {"insertion", p.insertion}, {"reread", p.reread}};
 }
 
 inline void to_json(nlohmann::json& j, const Smoothing_result& r)
@@ -126,6 +134,7 @@ inline void to_json(nlohmann::json& j, const Smoothing_result& r)
                        {"tensor_voting", r.used_tensor_voting}}},
                      {"embedded_triangles", r.embedded_triangles},
                      {"topology", r.topology},
+                     {"contraction", r.contraction},
                      {"insertion", r.insertion},
                      {"phase_seconds", r.phases},
                      {"seconds", r.seconds}};
@@ -156,6 +165,8 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"topology_optimization", o.topology_optimization},
                      {"vertex_insertion", o.vertex_insertion},
                      {"max_vertex_insertions", o.max_vertex_insertions},
+                     {"edge_contraction", o.edge_contraction},
+                     {"max_vertex_removals", o.max_vertex_removals},
                      {"max_min_threshold", o.max_min_threshold},
                      {"largest_angle_phase", o.largest_angle_phase},
                      {"largest_angle_threshold", o.largest_angle_threshold},

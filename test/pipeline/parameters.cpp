@@ -65,6 +65,8 @@ TEST(Parameters, ChainSetsEveryOption)
                      .topology_optimization(false)
                      .vertex_insertion(false)
                      .max_vertex_insertions(12)
+                     .edge_contraction(true)
+                     .max_vertex_removals(9)
                      .max_min_threshold(0.25)
                      .smoothing_method(BODT::Smoothing_method::NODT)
                      .feature_edge_ratio(0.2)
@@ -81,6 +83,8 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_FALSE(o.topology_optimization);
   EXPECT_FALSE(o.vertex_insertion);
   EXPECT_EQ(o.max_vertex_insertions, 12);
+  EXPECT_TRUE(o.edge_contraction);
+  EXPECT_EQ(o.max_vertex_removals, 9);
   EXPECT_EQ(o.max_min_threshold, 0.25);
   EXPECT_EQ(o.smoothing_method, BODT::Smoothing_method::NODT);
   EXPECT_EQ(o.tensor_voting.edge_ratio, 0.2);
@@ -91,6 +95,8 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_TRUE(d.topology_optimization);
   EXPECT_TRUE(d.vertex_insertion);
   EXPECT_EQ(d.max_vertex_insertions, -1);
+  EXPECT_FALSE(d.edge_contraction);
+  EXPECT_EQ(d.max_vertex_removals, -1);
   EXPECT_EQ(d.max_min_threshold, defaults.max_min_threshold);
   EXPECT_EQ(d.smoothing_method, BODT::Smoothing_method::BODT);
   EXPECT_EQ(d.max_iteration_number, defaults.max_iteration_number);

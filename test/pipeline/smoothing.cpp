@@ -843,6 +843,81 @@ TEST(Pipeline, SameCellsOnAnyNumberOfThreadsWithEveryPassAtWork)
   }
 }
 
+// Edge contraction on CGAL-meshed inputs with features, corners and two
+// subdomains (insertion off, so that every output vertex is an input vertex):
+// validity, every subdomain's volume, every corner where it was, every feature
+// vertex kept, the extreme angles no worse, the vertex count down by what the
+// passes report and at most 5%, and the same cells on 1, 2 and 4 threads.
+TEST(Pipeline, EdgeContractionKeepsVolumesFeaturesCornersOnAnyNumberOfThreads)
+{
+  using namespace bodt_inputs;
+  struct Removals
+  {
+    std::size_t* removed;
+    void after_classification(const BODT::Smoothing_result&) {}
+    void after_iteration(const BODT::Iteration_stats& s) { *removed += s.contraction.contractions; }
+  };
+  std::size_t total = 0;
+  for(Shape shape : {Shape::two_subdomains, Shape::genus2, Shape::sharp_part, Shape::torus})
+  {
+    SCOPED_TRACE(name(shape));
+    const Generated_mesh input = make_input(shape, Size::small);
+    const auto before = BODT::mesh_quality(input.c3t3);
+    const auto& tr0 = input.c3t3.triangulation();
+    auto cp = tr0.geom_traits().construct_point_3_object();
+    std::set<Point> corners;
+    std::size_t features = 0;
+    for(auto v = tr0.finite_vertices_begin(); v != tr0.finite_vertices_end(); ++v)
+    {
+      if(input.c3t3.in_dimension(v) == 0) corners.insert(cp(v->point()));
+      features += input.c3t3.in_dimension(v) == 1;
+    }
+    BODT::Tet_mesh reference;
+    for(int threads : {1, 2, 4})
+    {
+      C3t3 c3t3 = input.c3t3;
+      std::size_t removed = 0;
+      CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::edge_contraction = true,
+                                 CGAL::parameters::vertex_insertion = false,
+                                 CGAL::parameters::number_of_threads = threads,
+                                 CGAL::parameters::progress_visitor = Removals{&removed});
+      const BODT::Tet_mesh m = BODT::c3t3_to_tet_mesh(c3t3);
+      if(threads > 1)
+      {
+        EXPECT_TRUE(m.points == reference.points) << threads << " threads";
+        EXPECT_TRUE(m.tets == reference.tets) << threads << " threads";
+        EXPECT_TRUE(m.triangles == reference.triangles) << threads << " threads";
+        continue;
+      }
+      reference = m;
+      total += removed;
+      const auto& tr = c3t3.triangulation();
+      expect_valid(tr);
+      EXPECT_EQ(tr.number_of_vertices() + removed, tr0.number_of_vertices());
+      EXPECT_LE(removed, tr0.number_of_vertices() / 20);
+      const auto after = BODT::mesh_quality(c3t3);
+      EXPECT_EQ(after.inverted_tets, 0u);
+      for(const auto& kv : before.volume_per_subdomain)
+        EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second) << "subdomain " << kv.first;
+      EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
+      EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg + kAngleSlack);
+      std::size_t corners_after = 0, features_after = 0;
+      for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      {
+        if(c3t3.in_dimension(v) == 0)
+        {
+          EXPECT_TRUE(corners.count(cp(v->point()))) << "a corner moved";
+          ++corners_after;
+        }
+        features_after += c3t3.in_dimension(v) == 1;
+      }
+      EXPECT_EQ(corners_after, corners.size());
+      EXPECT_EQ(features_after, features);
+    }
+  }
+  EXPECT_GT(total, 0u) << "no contraction: the checks would not reach it";
+}
+
 // The largest-angle phase (on by default) starts where the main phase ends: it
 // lowers the largest angle without lowering the smallest, keeps every
 // subdomain's volume and the vertex count, and inverts nothing.

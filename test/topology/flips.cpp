@@ -11,12 +11,14 @@
 
 #include <CGAL/BODT_3/Tet_mesh_conversion.h>
 #include <CGAL/BODT_3/internal/Quality/dihedral_angles.h>
+#include <CGAL/BODT_3/internal/Topology/Edge_contraction.h>
 #include <CGAL/BODT_3/internal/Topology/Edge_removal.h>
 #include <CGAL/BODT_3/internal/Topology/Multi_face_removal.h>
 #include <CGAL/BODT_3/internal/Topology/flip_pass.h>
 #include <CGAL/BODT_3/internal/Topology/replace_cells.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
 
+#include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Random.h>
 
 #include <gtest/gtest.h>
@@ -713,5 +715,152 @@ TEST(MultiFaceRemoval, RefusesAFaceBetweenTwoSubdomains)
     const bool proposed = BODT::internal::Multi_face_removal<Adapter>()(ctx, c, c->index(b.handles[1]), flip);
     if(two) { EXPECT_FALSE(proposed); }
     else { EXPECT_TRUE(proposed && flip.improves()); }
+  }
+}
+
+// Edge contraction, constructed: the Delaunay tetrahedra of `points` (generic
+// but for the square's corners), all of subdomain `label`.
+std::vector<std::array<int, 4>> delaunay_tets(const std::vector<Point>& points)
+{
+  using K = CGAL::Kernel_traits<Point>::Kernel;
+  CGAL::Delaunay_triangulation_3<K> dt;
+  std::map<Point, int> index;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    dt.insert(points[i]);
+    index[points[i]] = static_cast<int>(i);
+  }
+  std::vector<std::array<int, 4>> tets;
+  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+    tets.push_back({index.at(c->vertex(0)->point()), index.at(c->vertex(1)->point()),
+                    index.at(c->vertex(2)->point()), index.at(c->vertex(3)->point())});
+  return tets;
+}
+
+// Applies a contraction and checks what it must keep: validity, every
+// subdomain's exact volume, the complex's facets (or, with an interface in the
+// plane, each patch's area), the vertex gone, and the worst cell raised.
+void contract_and_check(Built& b, Adapter& adapter, const Flip& flip, Vertex_handle u, bool same_facets)
+{
+  const Snapshot before = snapshot(b.c3t3);
+  const auto volumes = exact_subdomain_volumes(b.c3t3);
+  const std::size_t vertices = b.c3t3.triangulation().number_of_vertices();
+  EXPECT_NEAR(worst_of_cells(b.c3t3, flip.old_cells), flip.old_worst, 1e-9);
+  EXPECT_NEAR(check_new_cells(b.c3t3, flip), flip.new_worst, 1e-9);
+  std::vector<Cell_handle> created;
+  ASSERT_TRUE(BODT::internal::replace_cells(adapter, flip.old_cells, flip.new_cells, flip.new_facets, &created,
+                                            nullptr, {u}));
+  expect_valid(b.c3t3);
+  EXPECT_EQ(b.c3t3.triangulation().number_of_vertices(), vertices - 1);
+  const Snapshot after = snapshot(b.c3t3);
+  expect_kept(before, after, same_facets);
+  EXPECT_TRUE(exact_subdomain_volumes(b.c3t3) == volumes) << "a subdomain's exact volume changed";
+  EXPECT_GT(worst_of_cells(b.c3t3, created), flip.old_worst);
+  EXPECT_GE(after.worst, before.worst);
+}
+
+// An interior vertex next to another makes flat cells; contracted onto it, they
+// go, the cube keeps its exact volume and its boundary facets. Not along an
+// edge of a curve, and never onto a vertex it shares no edge with (the link
+// condition fails: the star would fold over the rest).
+TEST(EdgeContraction, RemovesAnInteriorVertexAndKeepsTheExactVolumeAndTheBoundary)
+{
+  std::vector<Point> p;
+  for(double x : {-1.0, 1.0})
+    for(double y : {-1.0, 1.0})
+      for(double z : {-1.0, 1.0}) p.emplace_back(x + 0.01 * y, y + 0.02 * z, z + 0.03 * x);
+  p.emplace_back(0.11, 0.07, -0.13);   // w: 8
+  p.emplace_back(0.16, 0.09, -0.10);   // u: 9, close to w
+  p.emplace_back(-0.4, 0.35, 0.3);     // 10
+  const auto tets = delaunay_tets(p);
+  for(bool curve : {false, true})
+  {
+    SCOPED_TRACE(curve ? "u w on a curve" : "u inside");
+    Tet_mesh mesh = make_mesh(p, tets);
+    if(curve)
+    {
+      mesh.edges.push_back({8, 9});
+      mesh.edge_labels.push_back(1);
+    }
+    Built b;
+    build(mesh, b);
+    Adapter adapter(b.c3t3, false);
+    const Context ctx(adapter, BODT::internal::Dihedral_bounds(), false);
+    const Vertex_handle u = b.handles[9], w = b.handles[8];
+    ASSERT_TRUE(b.c3t3.triangulation().tds().is_edge(u, w));
+    Flip flip;
+    const bool proposed = BODT::internal::Edge_contraction<Adapter>()(ctx, u, w, flip);
+    if(curve)
+    {
+      EXPECT_FALSE(proposed);
+      continue;
+    }
+    ASSERT_TRUE(proposed);
+    EXPECT_EQ(flip.kind, BODT::internal::Flip_kind::edge_contraction);
+    EXPECT_FALSE(flip.boundary);
+    EXPECT_EQ(flip.removed, u);
+    EXPECT_TRUE(flip.new_facets.empty());
+    EXPECT_TRUE(flip.improves());
+    // A corner of the cube not joined to u: refused.
+    for(int k = 0; k < 8; ++k)
+      if(!b.c3t3.triangulation().tds().is_edge(u, b.handles[k]))
+      {
+        Flip far;
+        EXPECT_FALSE(BODT::internal::Edge_contraction<Adapter>()(ctx, u, b.handles[k], far)) << "corner " << k;
+      }
+    contract_and_check(b, adapter, flip, u, true);
+  }
+}
+
+// A vertex of an exactly planar interface between two subdomains slides along it
+// onto a neighbour in the plane: the facets through it move with it, each
+// subdomain keeps its exact volume and the interface its area. Onto a
+// neighbour off the plane, nothing is proposed.
+TEST(EdgeContraction, SlidesAlongAnExactlyPlanarInterfaceAndKeepsBothVolumes)
+{
+  std::vector<Point> plane = {Point(-1, -1, 0),    Point(1.02, -0.97, 0), Point(0.98, 1.01, 0), Point(-1.03, 0.99, 0),
+                              Point(0.42, -0.31, 0), Point(-0.37, 0.46, 0), Point(0.13, 0.11, 0), Point(0.17, 0.05, 0)};
+  const std::vector<Point> top = {Point(0.1, -0.2, 0.9), Point(-0.5, 0.3, 1.1), Point(0.6, 0.5, 0.8)};
+  const std::vector<Point> bottom = {Point(-0.2, 0.1, -1.0), Point(0.5, -0.6, -0.9), Point(-0.6, -0.4, -1.2)};
+  {
+    std::vector<Point> p = plane;
+    p.insert(p.end(), top.begin(), top.end());
+    const std::size_t n_top = p.size();
+    p.insert(p.end(), bottom.begin(), bottom.end());
+    // Each side triangulated apart (a Delaunay face on the hull plane is the 2D
+    // Delaunay triangulation of its points, the same from both sides).
+    auto side = [&](std::size_t begin, std::size_t end) {
+      std::vector<Point> q(p.begin(), p.begin() + plane.size());
+      q.insert(q.end(), p.begin() + begin, p.begin() + end);
+      auto t = delaunay_tets(q);
+      for(auto& tet : t)
+        for(int& i : tet)
+          if(i >= static_cast<int>(plane.size())) i += static_cast<int>(begin - plane.size());
+      return t;
+    };
+    std::vector<std::array<int, 4>> tets = side(plane.size(), n_top);
+    std::vector<int> labels(tets.size(), 1);
+    const auto below = side(n_top, p.size());
+    tets.insert(tets.end(), below.begin(), below.end());
+    labels.resize(tets.size(), 2);
+    Built b;
+    build(make_mesh(p, tets, labels), b);
+    expect_valid(b.c3t3);
+    Adapter adapter(b.c3t3, false);
+    const Context ctx(adapter, BODT::internal::Dihedral_bounds(), false);
+    const Vertex_handle u = b.handles[7], w = b.handles[6];
+    ASSERT_TRUE(b.c3t3.triangulation().tds().is_edge(u, w));
+    Flip flip;
+    ASSERT_TRUE(BODT::internal::Edge_contraction<Adapter>()(ctx, u, w, flip));
+    EXPECT_TRUE(flip.boundary);
+    EXPECT_FALSE(flip.new_facets.empty());
+    EXPECT_TRUE(flip.improves());
+    for(std::size_t k = plane.size(); k < p.size(); ++k)
+      if(b.c3t3.triangulation().tds().is_edge(u, b.handles[k]))
+      {
+        Flip off;
+        EXPECT_FALSE(BODT::internal::Edge_contraction<Adapter>()(ctx, u, b.handles[k], off)) << "apex " << k;
+      }
+    contract_and_check(b, adapter, flip, u, false);
   }
 }

@@ -165,6 +165,17 @@ struct Smoothing_options
   /// At most this many vertices are inserted; a negative value means 5% of the
   /// input's vertices.
   long long max_vertex_insertions = -1;
+  /// Edge contraction (Edge_contraction.h): a vertex inside a subdomain, or on a
+  /// flat part of the boundary or of an interface, is removed by moving it onto a
+  /// neighbour where that raises the worst cell around it, at the cells a flip pass
+  /// works on, after the max-min steps of the last phase (of the only phase
+  /// without `largest_angle_phase`). Corners and feature vertices never go;
+  /// volumes and surfaces stay exactly as they are. Off by default: measured in
+  /// doc/manual.md, it helps some meshes and leaves most as they were.
+  bool edge_contraction = false;
+  /// At most this many vertices are removed; a negative value means 5% of the
+  /// input's vertices.
+  long long max_vertex_removals = -1;
   /// How far the surface (boundary and interfaces) may go from the input's, as a
   /// fraction of the largest side of the bounding box of the input's surface (like
   /// MMG's -hausd, relative). A move of a surface vertex is refused when the vertex

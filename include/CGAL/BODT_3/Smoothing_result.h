@@ -69,6 +69,25 @@ struct Insertion_stats
   }
 };
 
+/// What an edge-contraction pass did.
+struct Contraction_stats
+{
+  std::size_t contractions = 0;            // vertices removed, each moved onto a neighbour
+  std::size_t boundary_contractions = 0;   // of which on a flat part of the boundary or of an interface
+  double seconds = 0;                      // the pass, with the search for the cells it starts from
+
+  static constexpr auto counters()
+  {
+    using S = Contraction_stats;
+    return std::make_tuple(&S::contractions, &S::boundary_contractions, &S::seconds);
+  }
+  Contraction_stats& operator+=(const Contraction_stats& o)
+  {
+    internal::add_counters(*this, o);
+    return *this;
+  }
+};
+
 /// What one sweep did, as reported to visitors.
 struct Iteration_stats
 {
@@ -87,6 +106,7 @@ struct Iteration_stats
   std::size_t max_min_moves = 0;      // vertices moved by the max-min fallback
   double max_relative_move = 0;       // largest move / local size
   Topology_stats topology;            // the flip pass after the sweep
+  Contraction_stats contraction;      // the edge-contraction pass after the max-min steps
   Insertion_stats insertion;          // the insertion pass that ends the iteration
   double sweep_seconds = 0;           // time of the sweep alone
   double max_min_seconds = 0;         // of the max-min steps
@@ -102,6 +122,7 @@ struct Phase_seconds
   double sweeps = 0;
   double flips = 0;
   double max_min = 0;      // max-min steps
+  double contraction = 0;  // edge contractions
   double insertion = 0;
   double reread = 0;       // the flat view re-read after a connectivity change
 };
@@ -121,6 +142,7 @@ struct Smoothing_result
   std::size_t embedded_triangles = 0; // file triangles inside one subdomain, kept (mesh files only)
   bool used_tensor_voting = false;
   Topology_stats topology;            // summed over the iterations
+  Contraction_stats contraction;      // summed over the iterations
   Insertion_stats insertion;          // summed over the iterations
   Phase_seconds phases;
   double seconds = 0;

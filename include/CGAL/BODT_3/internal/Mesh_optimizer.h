@@ -12,6 +12,7 @@
 #include <CGAL/BODT_3/internal/Smoothing/Boundary_distance_guard.h>
 #include <CGAL/BODT_3/internal/Smoothing/Smoothing_sweep.h>
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
+#include <CGAL/BODT_3/internal/Topology/contraction_pass.h>
 #include <CGAL/BODT_3/internal/Topology/flip_pass.h>
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
@@ -75,9 +76,14 @@ inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
   std::vector<Phase> phases{{0, opt}};
   if(!opt.largest_angle_phase || opt.smoothing_method == Smoothing_method::NODT) return phases;
 
+  // Edge contraction in the last phase only: measured there, it changed the
+  // extreme angles only for the better; in the main phase, both ways, as the later
+  // phases took other paths (doc/manual.md).
+  phases[0].options.edge_contraction = false;
   Smoothing_options lower = opt;
   lower.quality_measure = Quality_measure::largest_dihedral_angle;
   lower.vertex_insertion = false;
+  lower.edge_contraction = false;
   // Max-min steps where an angle is above the threshold; flips around those
   // cells, where an angle is also below its supplement (the flip pass selects by
   // sine), since a flat cell often goes only with its neighbours.
@@ -151,6 +157,10 @@ public:
                             ? static_cast<std::size_t>(options.max_vertex_insertions)
                             : static_cast<std::size_t>(std::floor(0.05 * double(mesh_.number_of_vertices())));
     if(!options.vertex_insertion || options.moving_vertices == Moving_vertices::NONE) insertion_budget_ = 0;
+    removal_budget_ = options.max_vertex_removals >= 0
+                          ? static_cast<std::size_t>(options.max_vertex_removals)
+                          : static_cast<std::size_t>(std::floor(0.05 * double(mesh_.number_of_vertices())));
+    if(!options.edge_contraction || options.moving_vertices == Moving_vertices::NONE) removal_budget_ = 0;
   }
 
   /// Runs the phases; the result's code is the main phase's, or the time limit's.
@@ -164,7 +174,8 @@ public:
       if(phase.number == 0) result_.code = code;
     }
     if(out_of_time_) result_.code = TIME_LIMIT_REACHED;
-    result_.moved_vertices = static_cast<std::size_t>(std::count(moved_.begin(), moved_.end(), 1));
+    for(std::size_t v = 0; v < moved_.size(); ++v)   // of the vertices still there
+      result_.moved_vertices += moved_[v] && view_.vertices()[v] != Vertex_handle();
     result_.seconds = timer_.time();
     return result_;
   }
@@ -196,6 +207,7 @@ private:
       if(moves) sweep(stats);
       if(opt.topology_optimization) flips(stats);
       if(moves && opt.max_min_threshold > 0) max_min_steps(stats);   // after the flips, which remove most flat cells
+      if(removal_budget_ > 0 && opt.edge_contraction) contraction(stats);
       if(insertion_budget_ > 0 && opt.vertex_insertion) insertion(stats);
       report_iteration(stats);
       if(const std::optional<Mesh_optimization_return_code> stop = stop_reason(stats))
@@ -263,6 +275,39 @@ private:
     charge(result_.phases.max_min);
   }
 
+  // Removes vertices inside a subdomain (and, when boundary vertices move, on
+  // flat parts of the surface) where that raises the worst cell around them.
+  void contraction(Iteration_stats& stats)
+  {
+    const Smoothing_options& opt = phase_options_;
+    const double start = timer_.time();
+    touched_.clear();
+    added_.clear();
+    begin_pass(contraction_history_);
+    const bool known = guard_knows() && !opt.flips.flip_outside;
+    std::vector<Candidate> measured;
+    if(known) collect_below(opt.flips.quality_threshold, measured, [this](std::size_t c) { return measure(c); });
+    const bool surface = opt.moving_vertices == Moving_vertices::ALL;
+    auto may_remove = [this, surface](Vertex_handle v) {
+      const Vertex_kind kind = classification_.kind[view_.index(v)];
+      return kind == Vertex_kind::interior || (surface && kind == Vertex_kind::surface);
+    };
+    std::vector<int> removed;
+    stats.contraction = contraction_pass(adapter_, opt.flips, bounds_, opt.quality_measure, removal_budget_,
+                                         may_remove, vertex_id(), removed, touched_, &contraction_history_,
+                                         known ? &measured : nullptr);
+    stats.contraction.seconds = timer_.time() - start;
+    removal_budget_ -= stats.contraction.contractions;
+    clock_ = contraction_history_.clock;
+    charge(result_.phases.contraction);
+    for(int id : removed)
+    {
+      view_.forget(id);
+      classification_.kind[id] = Vertex_kind::fixed;   // no cell: never moves
+    }
+    if(!removed.empty()) reread(stats);
+  }
+
   void insertion(Iteration_stats& stats)
   {
     const Smoothing_options& opt = phase_options_;
@@ -297,7 +342,9 @@ private:
     for(const auto& a : added_) classify_added(a);
     std::vector<int> changed;
     for(Vertex_handle v : touched_)
-      if(!adapter_.triangulation().is_infinite(v)) changed.push_back(view_.index(v));
+      if(!adapter_.triangulation().is_infinite(v))
+        if(const int i = view_.index(v); view_.vertices()[i] != Vertex_handle())   // not removed since
+          changed.push_back(i);
     const std::size_t now = clock_;
     changed_at_.resize(mesh_.number_of_vertices(), now);
     new_star_at_.resize(mesh_.number_of_vertices(), now);
@@ -310,7 +357,8 @@ private:
   // How the phase ends, if it does after this iteration.
   std::optional<Mesh_optimization_return_code> stop_reason(const Iteration_stats& stats)
   {
-    const bool changed_cells = stats.topology.total() > 0 || stats.insertion.vertices_added > 0;
+    const bool changed_cells =
+        stats.topology.total() > 0 || stats.insertion.vertices_added > 0 || stats.contraction.contractions > 0;
     const bool unlimited = options_.max_iteration_number == 0;
     const double convergence =
         unlimited && options_.convergence == 0 ? unlimited_convergence : options_.convergence;
@@ -513,6 +561,7 @@ private:
   void report_iteration(Iteration_stats& stats)
   {
     result_.topology += stats.topology;
+    result_.contraction += stats.contraction;
     result_.insertion += stats.insertion;
     stats.seconds = timer_.time();
     result_.iterations = iteration_;
@@ -555,10 +604,12 @@ private:
   std::vector<std::size_t> changed_at_, new_star_at_;
   std::array<Attempt_history, 2> flip_histories_;   // by the minimum sine, by the largest angle
   Attempt_history insertion_history_;
+  Attempt_history contraction_history_;
   std::vector<Cell_handle> insertion_candidates_;    // the insertion pass's
   std::vector<Vertex_handle> touched_;               // vertices whose star the last pass changed
   std::vector<Added_vertex<Vertex_handle>> added_;   // vertices the last insertion pass added
   std::size_t insertion_budget_ = 0;
+  std::size_t removal_budget_ = 0;
   std::size_t iteration_ = 0;
   bool out_of_time_ = false;
   std::vector<char> moved_;   // vertices moved in some phase

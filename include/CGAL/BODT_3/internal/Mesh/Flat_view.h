@@ -70,11 +70,14 @@ public:
     Tr& tr = adapter_.triangulation();
     auto cp = tr.geom_traits().construct_point_3_object();
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-      if(index_.insert(v, static_cast<int>(handles_.size())))
-      {
-        handles_.push_back(v);
-        mesh_.points.push_back(cp(v->point()));
-      }
+    {
+      // A new vertex may live where a removed one did: it gets a new index.
+      const int known = index_.find(v);
+      if(known >= 0 && handles_[known] != Vertex_handle()) continue;
+      index_.assign(v, static_cast<int>(handles_.size()));
+      handles_.push_back(v);
+      mesh_.points.push_back(cp(v->point()));
+    }
     cells_.clear();
     // Only the neighbours are looked up by cell: the index lives while they are read.
     Handle_index_map<Cell_handle> cell_index;
@@ -101,16 +104,23 @@ public:
     mesh_.build_incidences();
   }
 
+  /// Forgets the vertex of index `i`, which the triangulation no longer has (an
+  /// edge contraction removed it): the index stays, with no cell, and is never
+  /// given to another vertex, so that indices stay stable ids.
+  void forget(int i) { handles_[static_cast<std::size_t>(i)] = Vertex_handle(); }
+
   /// Writes the positions of `mesh()` back into the triangulation.
   void write_back()
   {
-    for(std::size_t i = 0; i < handles_.size(); ++i) set_bare_point(adapter_.triangulation(), handles_[i], mesh_.points[i]);
+    for(std::size_t i = 0; i < handles_.size(); ++i)
+      if(handles_[i] != Vertex_handle()) set_bare_point(adapter_.triangulation(), handles_[i], mesh_.points[i]);
   }
 
   /// Re-reads the positions from the triangulation (after moves made on it directly).
   void read_points()
   {
-    for(std::size_t i = 0; i < handles_.size(); ++i) mesh_.points[i] = bare_point(adapter_.triangulation(), handles_[i]);
+    for(std::size_t i = 0; i < handles_.size(); ++i)
+      if(handles_[i] != Vertex_handle()) mesh_.points[i] = bare_point(adapter_.triangulation(), handles_[i]);
   }
 
 private:

@@ -24,7 +24,8 @@ enum class Flip_kind : unsigned char
   flip_2_3,             // one face removed, an edge created
   flip_3_2,             // an edge of three cells removed
   edge_removal,         // an edge of four or more cells removed
-  multi_face_removal    // two or more faces removed, an edge created
+  multi_face_removal,   // two or more faces removed, an edge created
+  edge_contraction      // a vertex removed by moving it onto a neighbour (Edge_contraction.h)
 };
 
 /// A proposed connectivity change, ready for `replace_cells`: the cells it
@@ -43,9 +44,11 @@ struct Flip
   std::vector<New_facet<Vertex_handle, typename Adapter::Patch>> new_facets;
   double old_worst = 0;
   double new_worst = -1;
+  Vertex_handle removed = Vertex_handle();   // the vertex an edge contraction removes
 
   void clear()
   {
+    removed = Vertex_handle();
     old_cells.clear();
     new_cells.clear();
     new_facets.clear();

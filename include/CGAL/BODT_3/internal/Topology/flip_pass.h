@@ -335,6 +335,7 @@ private:
     case Flip_kind::flip_3_2: ++stats.flips_3_2; break;
     case Flip_kind::edge_removal: ++stats.edge_removals; break;
     case Flip_kind::multi_face_removal: ++stats.multi_face_removals; break;
+    case Flip_kind::edge_contraction: break;   // not a flip pass's: contraction_pass counts them
     }
     if(flip.boundary) ++stats.boundary_flips;
   }

@@ -43,6 +43,29 @@ public:
     return true;
   }
 
+  /// Sets the index of h, inserting it if it is not there.
+  void assign(Handle h, int index)
+  {
+    if(2 * (size_ + 1) > capacity_) grow();
+    const std::uintptr_t key = address(h);
+    for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
+    {
+      const std::uintptr_t k = keys_[s].load(std::memory_order_relaxed);
+      if(k == key)
+      {
+        index_[s] = index;
+        return;
+      }
+      if(k == 0)
+      {
+        keys_[s].store(key, std::memory_order_relaxed);
+        index_[s] = index;
+        ++size_;
+        return;
+      }
+    }
+  }
+
   /// Inserts (handles[i], i) for every i, from `workers` threads (Thread_workers.h),
   /// into a map that holds none of them. Slots are claimed by compare-and-swap, so
   /// where an entry lands depends on the threads, what `find` returns does not.
