@@ -6,7 +6,7 @@
 // T --report R -q` runs as a child of GNU time for every binary and thread count.
 // Per run: wall, CPU (user + sys) and peak resident memory from GNU time; from the
 // JSON report the process's read, quality and smoothing, the smoothing's
-// conversion, set-up and passes, and per phase (main, largest angle, last) the
+// conversion, set-up and passes, and per phase (main, largest angle, last, worst cells) the
 // seconds of each pass (sweep, flips, max-min steps, insertion, re-read) summed
 // over the phase's iterations; the extreme dihedral angles before and after; the
 // speed-up over the run on the first thread count, and whether the output has the
@@ -83,7 +83,7 @@ struct Bad_option : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-const char* const phase_names[3] = {"main", "largest angle", "last"};
+const char* const phase_names[4] = {"main", "largest angle", "last", "worst cells"};
 const char* const pass_names[5] = {"sweep", "flips", "max_min", "insertion", "reread"};   // JSON keys
 
 struct Binary
@@ -136,7 +136,7 @@ struct Run
   double wall = 0, user = 0, sys = 0, peak_mb = 0;
   double read = 0, quality = 0, smoothing = 0, conversion = 0, setup = 0;
   std::array<double, 5> passes{};   // phase_seconds: sweeps, flips, max_min, insertion, reread
-  std::array<Phase_passes, 3> phases;
+  std::array<Phase_passes, 4> phases;
   Extremes before, after;
   std::size_t iterations = 0, flips = 0, inserted = 0;
   double speed_up = 1;
@@ -591,7 +591,7 @@ std::string angles(const Extremes& e) { return fixed(e.min) + " / " + fixed(e.ma
 std::string phase_iterations(const Run& r)
 {
   std::string s = std::to_string(r.phases[0].iterations);
-  for(int p = 1; p < 3; ++p) s += "+" + std::to_string(r.phases[p].iterations);
+  for(int p = 1; p < 4; ++p) s += "+" + std::to_string(r.phases[p].iterations);
   return s;
 }
 
@@ -619,7 +619,7 @@ std::string markdown(const Report& rep, const Options& o)
   for(const Binary& b : o.binaries) s << "- bodt " << b.label << ": `" << b.path << "`\n";
   s << "\n`bodt smooth IN -o OUT --iterations I --threads T --report R -q`, default pipeline. Seconds of wall time "
        "unless said; CPU: user + sys (GNU time); peak: resident set (GNU time); its: iterations of the main, "
-       "largest-angle and last phases; passes: sweeps, flips, max-min steps, insertion and re-reads (next "
+       "largest-angle, last and worst-cell phases; passes: sweeps, flips, max-min steps, insertion and re-reads (next "
        "table); other: smoothing time in no reported phase; speed-up: wall of the run on "
     << o.threads.front() << " thread" << (o.threads.front() > 1 ? "s" : "")
     << " over this run's; same bytes: the output is that run's";
@@ -646,7 +646,7 @@ std::string markdown(const Report& rep, const Options& o)
     << " threads | phase | its | sweep | flips | max-min | insertion | re-read | phase |\n|---|" << bodt_rule
     << "---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const Run& r : rep.runs)
-    for(int p = 0; p < 3; ++p)
+    for(int p = 0; p < 4; ++p)
     {
       const Phase_passes& phase = r.phases[p];
       if(phase.iterations == 0) continue;
@@ -715,7 +715,7 @@ json to_json(const Report& rep, const Options& o)
   for(const Run& r : rep.runs)
   {
     json phases = json::array();
-    for(int p = 0; p < 3; ++p)
+    for(int p = 0; p < 4; ++p)
     {
       json phase = {{"phase", phase_names[p]}, {"iterations", r.phases[p].iterations}};
       for(int k = 0; k < 5; ++k) phase["seconds"][pass_names[k]] = r.phases[p].seconds[k];

@@ -124,6 +124,7 @@ const std::vector<Option>& smoothing_options()
        [](BODT::Smoothing_options& o, py::handle v) { o.topology_optimization = v.cast<bool>(); }},
       {"vertex_insertion", [](BODT::Smoothing_options& o, py::handle v) { o.vertex_insertion = v.cast<bool>(); }},
       {"edge_contraction", [](BODT::Smoothing_options& o, py::handle v) { o.edge_contraction = v.cast<bool>(); }},
+      {"worst_cell_phase", [](BODT::Smoothing_options& o, py::handle v) { o.worst_cell_phase = v.cast<bool>(); }},
       {"max_vertex_removals",
        [](BODT::Smoothing_options& o, py::handle v) { o.max_vertex_removals = v.cast<long long>(); }},
       {"max_vertex_insertions",

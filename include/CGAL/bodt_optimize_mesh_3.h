@@ -189,6 +189,11 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
  *     \cgalParamDescription{at most this many new vertices; negative: 5% of the input's vertices}
  *     \cgalParamType{`long long`} \cgalParamDefault{-1}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{worst_cell_phase}
+ *     \cgalParamDescription{after the last phase, max-min steps and flips at the cells within 5 degrees of
+ *       the mesh's worst, until an iteration raises neither extreme angle}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{edge_contraction}
  *     \cgalParamDescription{in the last phase, vertices inside a subdomain or on a flat part of the surface
  *       are removed by contracting an edge where that raises the worst cell around them}

@@ -13,8 +13,10 @@ namespace BODT = CGAL::BODT_3;
 Progress::Progress(bool quiet, const BODT::Smoothing_options& options, std::FILE* out)
   : quiet_(quiet),
     terminal_(::isatty(::fileno(out)) != 0),
-    // The largest-angle phases run at most as many iterations each as the main phase.
-    phases_(options.largest_angle_phase && options.smoothing_method != BODT::Smoothing_method::NODT ? 3 : 1),
+    // The later phases run at most as many iterations each as the main phase.
+    phases_(options.largest_angle_phase && options.smoothing_method != BODT::Smoothing_method::NODT
+                ? (options.worst_cell_phase ? 4 : 3)
+                : 1),
     total_((options.max_iteration_number == 0 ? 1000 : options.max_iteration_number) * phases_),
     capped_(options.max_iteration_number == 0),
     time_limit_(options.time_limit),
@@ -43,10 +45,10 @@ void Progress::after_iteration(const BODT::Iteration_stats& s)
   // The time left if the coming sweeps take as long as the past ones on average.
   double left = s.seconds / static_cast<double>(s.iteration) * static_cast<double>(total_ - std::min(total_, s.iteration));
   if(time_limit_ > 0) left = std::min(left, std::max(0.0, time_limit_ - s.seconds));
-  static const char* const phase_names[3] = {"", ", largest-angle phase", ", last phase"};
+  static const char* const phase_names[4] = {"", ", largest-angle phase", ", last phase", ", worst-cell phase"};
   const std::string of = (capped_ ? " (until convergence, at most " + std::to_string(total_) + ")"
                                   : (phases_ > 1 ? " of at most " : " of ") + std::to_string(total_)) +
-                         phase_names[std::min<std::size_t>(s.phase, 2)];
+                         phase_names[std::min<std::size_t>(s.phase, 3)];
   if(terminal_)
   {
     const int width = 24;

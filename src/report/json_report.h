@@ -166,6 +166,7 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"vertex_insertion", o.vertex_insertion},
                      {"max_vertex_insertions", o.max_vertex_insertions},
                      {"edge_contraction", o.edge_contraction},
+                     {"worst_cell_phase", o.worst_cell_phase},
                      {"max_vertex_removals", o.max_vertex_removals},
                      {"max_min_threshold", o.max_min_threshold},
                      {"largest_angle_phase", o.largest_angle_phase},

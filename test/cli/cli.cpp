@@ -64,7 +64,7 @@ TEST(Cli, VersionAndHelp)
   ASSERT_EQ(run_bodt("smooth --help", out), 0);
   for(const char* option : {"--method", "--no-flips", "--no-insertion", "--max-insertions", "--format", "--quiet",
                             "--report", "--html", "--iterations", "--convergence", "--feature-angle", "--corner-angle",
-                            "--cut", "--json", "--max-boundary-distance"})
+                            "--cut", "--json", "--max-boundary-distance", "--contraction", "--max-removals", "--no-worst-cell-phase"})
     EXPECT_NE(out.find(option), std::string::npos) << option;
   EXPECT_EQ(run_bodt("", out), 2);
   EXPECT_EQ(run_bodt("smooth", out), 2);
@@ -156,7 +156,7 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   std::string out;
   ASSERT_EQ(run_bodt("smooth " + q(in) + " -o " + q(dir / "out.mesh") + " --report " + q(report) +
                          " --iterations 5 --no-insertion --max-insertions 7 --max-min-threshold 0.2 --largest-angle-threshold 125"
-                         " --max-boundary-distance 0.002 --quiet",
+                         " --max-boundary-distance 0.002 --contraction --max-removals 3 --quiet",
                      out, dir),
             0)
       << out;
@@ -169,6 +169,9 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_EQ(j.at("options").at("max_vertex_insertions"), 7);
   EXPECT_EQ(j.at("options").at("max_min_threshold"), 0.2);
   EXPECT_EQ(j.at("options").at("max_boundary_distance"), 0.002);
+  EXPECT_EQ(j.at("options").at("edge_contraction"), true);
+  EXPECT_EQ(j.at("options").at("max_vertex_removals"), 3);
+  EXPECT_LE(j.at("result").at("contraction").at("contractions").get<std::size_t>(), 3u);
   EXPECT_GE(j.at("boundary_distance").get<double>(), 0.0);
   EXPECT_LE(j.at("boundary_distance").get<double>(), 1e-2);
   EXPECT_EQ(j.at("options").at("method"), "bodt");
@@ -178,11 +181,12 @@ TEST(Cli, ReportIsValidJsonWithEverything)
   EXPECT_EQ(r.at("return_code"), "MAX_ITERATION_NUMBER_REACHED");
   // Five iterations of the main phase, then at most five of each largest-angle phase.
   ASSERT_EQ(j.at("per_iteration").size(), r.at("iterations").get<std::size_t>());
-  std::size_t per_phase[3] = {0, 0, 0};
+  std::size_t per_phase[4] = {0, 0, 0, 0};
   for(const nlohmann::json& s : j.at("per_iteration")) ++per_phase[s.at("phase").get<std::size_t>()];
   EXPECT_EQ(per_phase[0], 5u);
   EXPECT_LE(per_phase[1], 5u);
   EXPECT_LE(per_phase[2], 5u);
+  EXPECT_LE(per_phase[3], 5u);
   std::size_t moved = 0;
   for(const nlohmann::json& s : j.at("per_iteration"))
   {

@@ -838,7 +838,7 @@ TEST(Pipeline, SameCellsOnAnyNumberOfThreadsWithEveryPassAtWork)
     }
     EXPECT_GT(counts.flips, 0u);
     EXPECT_GT(counts.max_min, 0u);
-    EXPECT_EQ(counts.phases, 3u);
+    EXPECT_EQ(counts.phases, 4u);
     if(shape == Shape::genus2) { EXPECT_GT(counts.inserted, 0u); }
   }
 }
@@ -918,6 +918,85 @@ TEST(Pipeline, EdgeContractionKeepsVolumesFeaturesCornersOnAnyNumberOfThreads)
   EXPECT_GT(total, 0u) << "no contraction: the checks would not reach it";
 }
 
+// The unit cube in n^3 cubes of six tetrahedra, inner vertices jittered by up to
+// `jitter` of a cube's side (as the benchmark's hard grids): one subdomain, no
+// boundary triangles; the pipeline ends it with angles above 30 degrees.
+BODT::Tet_mesh jittered_cube(int n, double jitter)
+{
+  CGAL::Random rng(7);
+  std::vector<Point> p;
+  auto id = [n](int i, int j, int k) { return (i * (n + 1) + j) * (n + 1) + k; };
+  for(int i = 0; i <= n; ++i)
+    for(int j = 0; j <= n; ++j)
+      for(int k = 0; k <= n; ++k)
+      {
+        double c[3] = {double(i) / n, double(j) / n, double(k) / n};
+        const int g[3] = {i, j, k};
+        for(int d = 0; d < 3; ++d)
+          if(g[d] > 0 && g[d] < n) c[d] += rng.get_double(-jitter, jitter) / n;
+        p.emplace_back(c[0], c[1], c[2]);
+      }
+  std::vector<std::array<int, 4>> tets;
+  const int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      for(int k = 0; k < n; ++k)
+        for(const auto& o : order)
+        {
+          int c[3] = {i, j, k};
+          std::array<int, 4> t;
+          t[0] = id(c[0], c[1], c[2]);
+          for(int s = 0; s < 3; ++s)
+          {
+            ++c[o[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          tets.push_back(t);
+        }
+  return bodt_test::make_mesh(p, tets);
+}
+
+// The worst-cell phase on a mesh the phases before leave above their 30-degree
+// thresholds: it raises the smallest angle and never the largest, keeps validity
+// and the volume, ends by itself, and gives the same bytes on 1 and 2 threads;
+// switched off, the run is the three phases alone.
+TEST(Pipeline, WorstCellPhaseRaisesTheWorstCellAboveTheThresholds)
+{
+  const BODT::Tet_mesh input = jittered_cube(8, 0.15);
+  struct Phases
+  {
+    std::size_t* worst_iterations;
+    void after_classification(const BODT::Smoothing_result&) {}
+    void after_iteration(const BODT::Iteration_stats& s) { *worst_iterations += s.phase == 3; }
+  };
+  BODT::Smoothing_options opt;
+  opt.max_iteration_number = 5;
+  opt.worst_cell_phase = false;
+  BODT::Tet_mesh without = input;
+  std::size_t none = 0;
+  BODT::smooth(without, opt, Phases{&none});
+  EXPECT_EQ(none, 0u);
+  opt.worst_cell_phase = true;
+  BODT::Tet_mesh with = input, two = input;
+  std::size_t iterations = 0;
+  BODT::smooth(with, opt, Phases{&iterations});
+  opt.threads = 2;
+  BODT::smooth(two, opt);
+  EXPECT_TRUE(with.points == two.points && with.tets == two.tets);
+
+  const auto before = BODT::mesh_quality(input);
+  const auto q0 = BODT::mesh_quality(without);
+  const auto q1 = BODT::mesh_quality(with);
+  ASSERT_GT(q0.min_dihedral_deg, 30.0) << "the input would not reach the phase's case";
+  EXPECT_GE(iterations, 1u);
+  EXPECT_LE(iterations, opt.max_iteration_number);
+  EXPECT_GT(q1.min_dihedral_deg, q0.min_dihedral_deg + 0.1);
+  EXPECT_LE(q1.max_dihedral_deg, q0.max_dihedral_deg);
+  EXPECT_EQ(q1.inverted_tets, 0u);
+  EXPECT_NEAR(q1.volume, before.volume, 1e-12 * before.volume);
+  EXPECT_EQ(with.points.size(), input.points.size());
+}
+
 // The largest-angle phase (on by default) starts where the main phase ends: it
 // lowers the largest angle without lowering the smallest, keeps every
 // subdomain's volume and the vertex count, and inverts nothing.
@@ -941,7 +1020,7 @@ TEST(Pipeline, LargestAnglePhaseLowersTheLargestAngle)
     };
     std::set<std::size_t> seen;
     BODT::smooth(with, opt, Phases{&seen});
-    EXPECT_EQ(seen, (std::set<std::size_t>{0, 1, 2}));
+    EXPECT_EQ(seen, (std::set<std::size_t>{0, 1, 2, 3}));   // and the worst-cell phase
     const auto a = BODT::mesh_quality(without), b = BODT::mesh_quality(with);
     EXPECT_EQ(b.inverted_tets, 0u);
     EXPECT_TRUE(with.triangulation().tds().is_valid());

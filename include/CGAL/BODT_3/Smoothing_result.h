@@ -92,7 +92,7 @@ struct Contraction_stats
 struct Iteration_stats
 {
   std::size_t iteration = 0;          // 1-based, counted through the phases
-  std::size_t phase = 0;              // 0: main; 1: largest angle; 2: minimum sine again (largest_angle_phase)
+  std::size_t phase = 0;              // 0: main; 1: largest angle; 2: minimum sine again (largest_angle_phase); 3: worst cells (worst_cell_phase)
   std::size_t moved = 0;              // vertices that moved
   std::size_t shortened = 0;          // of which by a shortened step
   std::size_t refused = 0;            // vertices with a move that was refused entirely

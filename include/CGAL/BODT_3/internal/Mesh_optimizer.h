@@ -61,6 +61,8 @@ struct Phase
 {
   std::size_t number;
   Smoothing_options options;
+  /// Its max-min and flip thresholds follow the mesh's worst cell (`worst_cell_phase`).
+  bool follows_worst = false;
 };
 
 /// The phases of a run with options `opt`: the main phase, decided by
@@ -70,15 +72,16 @@ struct Phase
 /// and a last one by `quality_measure` again, both without insertion. The
 /// minimum sine treats an angle and its supplement alike, so it leaves the
 /// angles between its worst and the largest one alone: the second phase lowers
-/// them, the last uses what that freed.
+/// them, the last uses what that freed. With `worst_cell_phase` (and the minimum
+/// sine as the measure, the guard on), a fourth follows the mesh's worst cell.
 inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
 {
   std::vector<Phase> phases{{0, opt}};
   if(!opt.largest_angle_phase || opt.smoothing_method == Smoothing_method::NODT) return phases;
 
-  // Edge contraction in the last phase only: measured there, it changed the
-  // extreme angles only for the better; in the main phase, both ways, as the later
-  // phases took other paths (doc/manual.md).
+  // Edge contraction in the last phases only: in the main phase it changed the
+  // extreme angles more often, both ways, as the later phases took other paths
+  // (doc/manual.md).
   phases[0].options.edge_contraction = false;
   Smoothing_options lower = opt;
   lower.quality_measure = Quality_measure::largest_dihedral_angle;
@@ -98,6 +101,12 @@ inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
   if(last.max_min_threshold > 0 && last.quality_measure == Quality_measure::min_dihedral_sine)
     last.max_min_threshold = std::max(last.max_min_threshold, last.flips.quality_threshold);
   phases.push_back({2, last});
+
+  if(opt.worst_cell_phase && opt.quality_measure == Quality_measure::min_dihedral_sine && opt.quality_guard &&
+     opt.max_min_threshold > 0)
+  {
+    phases.push_back({3, last, true});
+  }
   return phases;
 }
 
@@ -170,7 +179,7 @@ public:
     {
       if(out_of_time_) break;
       start_phase(phase.options);
-      const Mesh_optimization_return_code code = run_phase(phase.number);
+      const Mesh_optimization_return_code code = run_phase(phase.number, phase.follows_worst);
       if(phase.number == 0) result_.code = code;
     }
     if(out_of_time_) result_.code = TIME_LIMIT_REACHED;
@@ -193,7 +202,7 @@ private:
   }
 
   // At most the phase's iterations, until one changes nothing or converges.
-  Mesh_optimization_return_code run_phase(std::size_t phase)
+  Mesh_optimization_return_code run_phase(std::size_t phase, bool follows_worst)
   {
     const Smoothing_options& opt = phase_options_;
     const std::size_t last = opt.max_iteration_number == 0 ? unlimited_iteration_cap : opt.max_iteration_number;
@@ -204,13 +213,18 @@ private:
       stats.iteration = ++iteration_;
       stats.phase = phase;
       const bool moves = opt.moving_vertices != Moving_vertices::NONE;
-      if(moves) sweep(stats);
+      if(follows_worst && !follow_worst(k))
+      {
+        code = CANT_IMPROVE_ANYMORE;
+        break;
+      }
+      if(moves && !follows_worst) sweep(stats);
       if(opt.topology_optimization) flips(stats);
       if(moves && opt.max_min_threshold > 0) max_min_steps(stats);   // after the flips, which remove most flat cells
       if(removal_budget_ > 0 && opt.edge_contraction) contraction(stats);
       if(insertion_budget_ > 0 && opt.vertex_insertion) insertion(stats);
       report_iteration(stats);
-      if(const std::optional<Mesh_optimization_return_code> stop = stop_reason(stats))
+      if(const std::optional<Mesh_optimization_return_code> stop = stop_reason(stats, follows_worst))
       {
         code = *stop;
         break;
@@ -222,6 +236,24 @@ private:
   }
 
   // The steps of an iteration.
+
+  // Before iteration k of a phase that follows the worst cell: its thresholds
+  // from the mesh's extreme angles now; false when the iteration before raised
+  // neither (the phase ends).
+  bool follow_worst(std::size_t k)
+  {
+    const Dihedral_bounds now = extreme_angles();
+    const double smallest = std::acos(std::min(1.0, now.cos_smallest())) * 180 / pi;
+    const double largest = std::acos(std::max(-1.0, now.cos_largest())) * 180 / pi;
+    if(k > 1 && smallest <= worst_smallest_ && largest >= worst_largest_) return false;
+    worst_smallest_ = smallest;
+    worst_largest_ = largest;
+    const double worst = std::min(smallest, 180 - largest);
+    Smoothing_options& opt = phase_options_;
+    opt.max_min_threshold = dihedral_sine(std::min(90.0, worst + opt.worst_cell_margin));
+    opt.flips.quality_threshold = std::max(options_.flips.quality_threshold, opt.max_min_threshold);
+    return true;
+  }
 
   void sweep(Iteration_stats& stats)
   {
@@ -355,15 +387,17 @@ private:
   }
 
   // How the phase ends, if it does after this iteration.
-  std::optional<Mesh_optimization_return_code> stop_reason(const Iteration_stats& stats)
+  // A phase that follows the worst cell has no sweep: `follow_worst` ends it.
+  std::optional<Mesh_optimization_return_code> stop_reason(const Iteration_stats& stats, bool follows_worst)
   {
     const bool changed_cells =
         stats.topology.total() > 0 || stats.insertion.vertices_added > 0 || stats.contraction.contractions > 0;
     const bool unlimited = options_.max_iteration_number == 0;
     const double convergence =
         unlimited && options_.convergence == 0 ? unlimited_convergence : options_.convergence;
-    if(stats.moved == 0 && !changed_cells) return CANT_IMPROVE_ANYMORE;
-    if(convergence > 0 && stats.max_relative_move < convergence && !changed_cells) return CONVERGENCE_REACHED;
+    if(!follows_worst && stats.moved == 0 && !changed_cells) return CANT_IMPROVE_ANYMORE;
+    if(!follows_worst && convergence > 0 && stats.max_relative_move < convergence && !changed_cells)
+      return CONVERGENCE_REACHED;
     if(options_.time_limit > 0 && timer_.time() >= options_.time_limit)
     {
       out_of_time_ = true;
@@ -612,6 +646,7 @@ private:
   std::size_t removal_budget_ = 0;
   std::size_t iteration_ = 0;
   bool out_of_time_ = false;
+  double worst_smallest_ = 0, worst_largest_ = 180;   // the extreme angles a worst-cell iteration started from
   std::vector<char> moved_;   // vertices moved in some phase
   Smoothing_result result_;
 };
