@@ -391,6 +391,40 @@ TEST(RandomSphere, SameOutputOnAnyNumberOfThreadsAndAValidColouring)
   EXPECT_NE(reference, finite_points(input));
 }
 
+// The re-read after a pass keeps what it can of the last read (Flat_view::read_cells):
+// after an insertion that replaces cells and flips that change cells in place
+// (CGAL's own 2-3 flips reuse cells), it must give what a first read gives.
+TEST(RandomSphere, ReReadAfterChangesIsAFirstRead)
+{
+  Delaunay tr = make_random_sphere();
+  using Adapter = BODT::internal::Triangulation_3_adapter<Delaunay>;
+  Adapter adapter(tr);
+  BODT::internal::Flat_view<Adapter> view(adapter);
+  tr.insert(Point(0.01, 0.02, 0.03));   // while the triangulation is still Delaunay
+  int flips = 0;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end() && flips < 8; ++c)
+    for(int i = 0; i < 4 && flips < 8; ++i)
+      if(!tr.is_infinite(c->neighbor(i)) && tr.flip(c, i))
+      {
+        ++flips;
+        break;   // the cell may be gone
+      }
+  ASSERT_GT(flips, 0);
+  ASSERT_TRUE(tr.tds().is_valid());   // no longer Delaunay
+  view.refresh();
+  Adapter again(tr);
+  const BODT::internal::Flat_view<Adapter> first(again);
+  ASSERT_EQ(view.cells(), first.cells());
+  const auto& m = view.mesh();
+  const auto& f = first.mesh();
+  for(std::size_t k = 0; k < m.cells.size(); ++k)
+    for(int i = 0; i < 4; ++i)
+      EXPECT_EQ(view.vertices()[m.cells[k][i]], first.vertices()[f.cells[k][i]]) << "cell " << k;
+  EXPECT_EQ(m.neighbor, f.neighbor);
+  EXPECT_EQ(m.in_mesh, f.in_mesh);
+  EXPECT_EQ(m.subdomain, f.subdomain);
+}
+
 TEST(Visitor, ReportsEveryIteration)
 {
   struct Counting_visitor

@@ -94,6 +94,38 @@ inline double largest_bbox_side(const Boundary_triangles& t)
   return std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
 }
 
+namespace internal {
+
+/// The points of a barycentric grid on each triangle (`samples` subdivisions per
+/// side, vertices included), each point once, in no particular order. Triangles
+/// that share a vertex or an edge share grid points: at 2 subdivisions (corners
+/// and side midpoints) every shared point is the same, bit for bit, from either
+/// side (a corner is copied, a midpoint is (a + b) / 2 in either order), so a
+/// closed surface has a third of the points its triangles list, and each one's
+/// distance is measured once.
+inline std::vector<Tet_mesh::Kernel::Point_3> grid_points(const Boundary_triangles& triangles, int samples)
+{
+  using Point = Tet_mesh::Kernel::Point_3;
+  std::vector<Point> points;
+  points.reserve(triangles.size() * static_cast<std::size_t>((samples + 1) * (samples + 2) / 2));
+  for(const auto& t : triangles)
+    for(int i = 0; i <= samples; ++i)
+      for(int j = 0; i + j <= samples; ++j)
+      {
+        const double u = double(i) / samples, v = double(j) / samples, x = 1 - u - v;
+        points.emplace_back(u * t[0].x() + v * t[1].x() + x * t[2].x(), u * t[0].y() + v * t[1].y() + x * t[2].y(),
+                            u * t[0].z() + v * t[1].z() + x * t[2].z());
+      }
+  auto less = [](const Point& a, const Point& b) {
+    return a.x() != b.x() ? a.x() < b.x() : a.y() != b.y() ? a.y() < b.y() : a.z() < b.z();
+  };
+  std::sort(points.begin(), points.end(), less);
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
+} // namespace internal
+
 /// Symmetric Hausdorff distance between two triangle sets, approximated by
 /// sampling each triangle on a barycentric grid (`samples` subdivisions per side,
 /// vertices included) and measuring exact point-to-surface distances with an
@@ -109,28 +141,17 @@ inline double hausdorff_distance(const Boundary_triangles& a, const Boundary_tri
   internal::Thread_workers<char> workers(threads);
   auto one_sided = [samples, &workers](const Boundary_triangles& from, const Boundary_triangles& to) {
     if(from.empty() || to.empty()) return 0.0;
+    const std::vector<K::Point_3> points = internal::grid_points(from, samples);
     Tree tree(to.begin(), to.end());
     tree.accelerate_distance_queries();
     // Built before the threads query it: queries only read.
-    tree.squared_distance(from.front()[0]);
-    std::vector<double> worst(static_cast<std::size_t>(internal::block_count(from.size(), 1024)), 0.0);
-    workers.for_blocks(from.size(), [&](char&, int block, std::size_t begin, std::size_t end) {
+    tree.squared_distance(points.front());
+    std::vector<double> worst(static_cast<std::size_t>(internal::block_count(points.size(), 4096)), 0.0);
+    workers.for_blocks(points.size(), [&](char&, int block, std::size_t begin, std::size_t end) {
       double w = 0;
-      for(std::size_t k = begin; k < end; ++k)
-      {
-        const auto& t = from[k];
-        for(int i = 0; i <= samples; ++i)
-          for(int j = 0; i + j <= samples; ++j)
-          {
-            const double u = double(i) / samples, v = double(j) / samples, x = 1 - u - v;
-            const K::Point_3 p(u * t[0].x() + v * t[1].x() + x * t[2].x(),
-                               u * t[0].y() + v * t[1].y() + x * t[2].y(),
-                               u * t[0].z() + v * t[1].z() + x * t[2].z());
-            w = std::max(w, tree.squared_distance(p));
-          }
-      }
+      for(std::size_t k = begin; k < end; ++k) w = std::max(w, tree.squared_distance(points[k]));
       worst[static_cast<std::size_t>(block)] = w;
-    }, 1024);
+    }, 4096);
     return std::sqrt(*std::max_element(worst.begin(), worst.end()));
   };
   return std::max(one_sided(a, b), one_sided(b, a));

@@ -13,6 +13,7 @@
 
 #include <CGAL/Kernel_traits.h>
 
+#include <array>
 #include <iterator>
 #include <map>
 #include <stdexcept>
@@ -78,27 +79,7 @@ public:
       handles_.push_back(v);
       mesh_.points.push_back(cp(v->point()));
     }
-    cells_.clear();
-    // Only the neighbours are looked up by cell: the index lives while they are read.
-    Handle_index_map<Cell_handle> cell_index;
-    cell_index.reset(tr.tds().number_of_cells());
-    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
-    cell_index.insert_all(cells_, workers_);
-    // Then each cell's vertices, region and neighbours: lookups only, in parallel.
-    // The adjacency is the triangulation's (the view's facet k is opposite vertex k, as in the cell).
-    const std::size_t nc = cells_.size();
-    resize_for_overwrite(mesh_.cells, nc);
-    resize_for_overwrite(mesh_.in_mesh, nc);
-    resize_for_overwrite(mesh_.subdomain, nc);
-    resize_for_overwrite(mesh_.neighbor, 4 * nc);
-    workers_.for_each(0, static_cast<int>(nc), [&](char&, int k) {
-      const Cell_handle c = cells_[static_cast<std::size_t>(k)];
-      mesh_.cells[k] = {index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))};
-      const auto r = adapter_.region(c);
-      mesh_.in_mesh[k] = r.kind == Region_kind::mesh ? 1 : 0;
-      mesh_.subdomain[k] = r.kind == Region_kind::mesh ? static_cast<int>(r.subdomain) : 0;
-      for(int i = 0; i < 4; ++i) mesh_.neighbor[4 * static_cast<std::size_t>(k) + i] = cell_index.find(c->neighbor(i));
-    }, 1024);
+    read_cells();
     mesh_.hull_checks.clear();
     if(adapter_.convex_hull()) add_hull_checks();
     mesh_.build_incidences();
@@ -153,6 +134,131 @@ private:
           mesh_.hull_checks.push_back({a, b, d, wi});
       }
     }
+  }
+
+  // The cells, with their vertices, regions and neighbours, in the order of the
+  // triangulation's container. A pass that changes cells replaces them and
+  // leaves the others where they are: a cell at the same address as at the last
+  // read, with the same vertices, is the same tetrahedron, and keeps its vertex
+  // indices and the neighbours that stayed (the two cells on a triangle are the
+  // same as long as both are). Only the new cells and the neighbours of the old
+  // ones across a changed triangle are looked up, in a map of the new cells; the
+  // arrays are those a first read makes.
+  void read_cells()
+  {
+    Tr& tr = adapter_.triangulation();
+    std::vector<Cell_handle> before;
+    before.swap(cells_);
+    for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
+    const std::size_t nc = cells_.size();
+    std::vector<std::array<int, 4>> cells_before;
+    cells_before.swap(mesh_.cells);
+    std::vector<int> neighbor_before;
+    neighbor_before.swap(mesh_.neighbor);
+    std::vector<int> now = same_slots(before);   // per cell before: its index now, or -1
+    std::vector<Cell_handle>().swap(before);
+
+    mesh_.cells.resize(nc);
+    resize_for_overwrite(mesh_.in_mesh, nc);
+    resize_for_overwrite(mesh_.subdomain, nc);
+    mesh_.neighbor.assign(4 * nc, unknown_neighbor);
+    // A slot that holds a new cell, or a cell changed in place, has other vertices: it is new.
+    std::vector<char> is_new(nc, 1);
+    const int n_before = static_cast<int>(now.size());
+    workers_.for_each(0, n_before, [&](char&, int j) {
+      const int k = now[static_cast<std::size_t>(j)];
+      if(k < 0) return;
+      const Cell_handle c = cells_[static_cast<std::size_t>(k)];
+      const std::array<int, 4>& q = cells_before[static_cast<std::size_t>(j)];
+      for(int i = 0; i < 4; ++i)
+        if(c->vertex(i) != handles_[static_cast<std::size_t>(q[i])])
+        {
+          now[static_cast<std::size_t>(j)] = -1;
+          return;
+        }
+      mesh_.cells[k] = q;
+      is_new[static_cast<std::size_t>(k)] = 0;
+    }, 1024);
+    std::vector<int> fresh;
+    for(std::size_t k = 0; k < nc; ++k)
+      if(is_new[k]) fresh.push_back(static_cast<int>(k));
+    std::vector<char>().swap(is_new);
+    Handle_index_map<Cell_handle> fresh_index;
+    fresh_index.reset(fresh.size());
+    for(int k : fresh) fresh_index.insert(cells_[static_cast<std::size_t>(k)], k);
+
+    // The cells kept: a neighbour that stayed is where it went; any other is new
+    // (it then learns this cell across the same triangle) or infinite.
+    workers_.for_each(0, n_before, [&](char&, int j) {
+      const int k = now[static_cast<std::size_t>(j)];
+      if(k < 0) return;
+      const Cell_handle c = cells_[static_cast<std::size_t>(k)];
+      read_region(k, c);
+      for(int i = 0; i < 4; ++i)
+      {
+        const Cell_handle n = c->neighbor(i);
+        const int o = neighbor_before[4 * static_cast<std::size_t>(j) + i];
+        const int m = o >= 0 ? now[static_cast<std::size_t>(o)] : -1;
+        int& entry = mesh_.neighbor[4 * static_cast<std::size_t>(k) + i];
+        if(m >= 0 && cells_[static_cast<std::size_t>(m)] == n)
+          entry = m;
+        else if((entry = fresh_index.find(n)) >= 0)
+          mesh_.neighbor[4 * static_cast<std::size_t>(entry) + n->index(c)] = k;
+        else
+          entry = checked_infinite(n);
+      }
+    }, 1024);
+    // The new cells: their vertices, and the neighbours not set from the other side.
+    workers_.for_each(0, static_cast<int>(fresh.size()), [&](char&, int f) {
+      const int k = fresh[static_cast<std::size_t>(f)];
+      const Cell_handle c = cells_[static_cast<std::size_t>(k)];
+      mesh_.cells[k] = {index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))};
+      read_region(k, c);
+      for(int i = 0; i < 4; ++i)
+      {
+        int& entry = mesh_.neighbor[4 * static_cast<std::size_t>(k) + i];
+        if(entry != unknown_neighbor) continue;
+        const Cell_handle n = c->neighbor(i);
+        entry = fresh_index.find(n);
+        if(entry < 0) entry = checked_infinite(n);
+      }
+    }, 256);
+  }
+
+  static constexpr int unknown_neighbor = -2;
+
+  void read_region(int k, Cell_handle c)
+  {
+    const auto r = adapter_.region(c);
+    mesh_.in_mesh[k] = r.kind == Region_kind::mesh ? 1 : 0;
+    mesh_.subdomain[k] = r.kind == Region_kind::mesh ? static_cast<int>(r.subdomain) : 0;
+  }
+
+  // -1 for a neighbour outside the view, which can only be an infinite cell.
+  int checked_infinite(Cell_handle n) const
+  {
+    if(!adapter_.triangulation().is_infinite(n)) throw std::logic_error("Flat_view: a neighbour not in the view");
+    return -1;
+  }
+
+  // For each cell of the last read (`before`), its index in this one if its slot
+  // still holds a finite cell, else -1. Both lists follow the container's slots,
+  // whose order the cells that stay keep: one walk pairs them.
+  std::vector<int> same_slots(const std::vector<Cell_handle>& before) const
+  {
+    const Tr& tr = adapter_.triangulation();
+    std::vector<int> now(before.size(), -1);
+    std::size_t j = 0, k = 0;
+    while(j < before.size() && k < cells_.size())
+    {
+      if(before[j] == cells_[k])
+        now[j++] = static_cast<int>(k++);
+      else if(tr.tds().cells().is_used(before[j]) && !tr.is_infinite(before[j]))
+        ++k;   // cells_[k] is new, in a slot before that of before[j], which is still there
+      else
+        ++j;   // before[j] is gone (or no longer finite)
+    }
+    return now;
   }
 
   Adapter& adapter_;

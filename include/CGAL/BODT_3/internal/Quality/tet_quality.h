@@ -141,6 +141,19 @@ std::array<double, 6> dihedral_cosines(const Point& p0, const Point& p1, const P
   return out;
 }
 
+/// The largest-angle measure of a tetrahedron, 1 + its smallest dihedral cosine,
+/// with its cosines in `cosines` for a caller that checks them too; -1 (and no
+/// cosines) for a tetrahedron that is not positively oriented in floating point.
+template <class Point>
+double largest_angle_measure(const Point& p0, const Point& p1, const Point& p2, const Point& p3,
+                             std::array<double, 6>& cosines)
+{
+  // The orientation test of `min_dihedral_sine` (the same determinant), without its sines.
+  if(!(tet_volume(p0, p1, p2, p3) > 0)) return -1;
+  cosines = dihedral_cosines(p0, p1, p2, p3);
+  return 1 + *std::min_element(cosines.begin(), cosines.end());
+}
+
 /// The quality of a tetrahedron by `measure`: larger is better, -1 for a
 /// tetrahedron that is not positively oriented in floating point.
 template <class Point>
@@ -148,10 +161,8 @@ double tet_quality(Quality_measure measure, const Point& p0, const Point& p1, co
 {
   if(measure == Quality_measure::largest_dihedral_angle)
   {
-    // The orientation test of `min_dihedral_sine` (the same determinant), without its sines.
-    if(!(tet_volume(p0, p1, p2, p3) > 0)) return -1;
-    const auto c = dihedral_cosines(p0, p1, p2, p3);
-    return 1 + *std::min_element(c.begin(), c.end());
+    std::array<double, 6> cosines;
+    return largest_angle_measure(p0, p1, p2, p3, cosines);
   }
   const double q = min_dihedral_sine(p0, p1, p2, p3);
   if(measure == Quality_measure::min_dihedral_sine || q < 0) return q;
@@ -221,16 +232,23 @@ public:
   template <class Point>
   bool contains(const Point& p0, const Point& p1, const Point& p2, const Point& p3, double q) const
   {
-    if(q >= safe_) return true;
-    for(double c : dihedral_cosines(p0, p1, p2, p3))
-      if(c > cos_smallest_ || c < cos_largest_) return false;
-    return true;
+    return q >= safe_ || within(dihedral_cosines(p0, p1, p2, p3));
   }
+
+  /// The same for a tetrahedron whose dihedral cosines are known.
+  bool contains(const std::array<double, 6>& cosines, double q) const { return q >= safe_ || within(cosines); }
 
   double cos_smallest() const { return cos_smallest_; }   // the cosine of the smallest angle allowed
   double cos_largest() const { return cos_largest_; }     // the cosine of the largest angle allowed
 
 private:
+  bool within(const std::array<double, 6>& cosines) const
+  {
+    for(double c : cosines)
+      if(c > cos_smallest_ || c < cos_largest_) return false;
+    return true;
+  }
+
   double cos_smallest_ = 1;
   double cos_largest_ = -1;
   double safe_ = 0;

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -161,13 +162,13 @@ public:
             {
               best_worst = Move_guard<K>::accepted_worst(trial_);
               best = p;
+              std::swap(best_trial_, trial_);   // the judgement apply needs, kept rather than made again
             }
           }
         if(best_worst > worst)
         {
-          guard_.accepts(v, best, trial_);
-          guard_.apply(v, best, trial_);
-          if(budget_) budget_->spend(trial_.cost);
+          guard_.apply(v, best, best_trial_);
+          if(budget_) budget_->spend(best_trial_.cost);
           worst = best_worst;
           moved = true;
         }
@@ -294,7 +295,7 @@ private:
   const Smoothing_options& opt_;
   Move_guard<K> guard_;
   Volume_budget* budget_;   // null: volume not priced
-  typename Move_guard<K>::Trial trial_;   // for the sequential max-min steps
+  typename Move_guard<K>::Trial trial_, best_trial_;   // for the sequential max-min steps
   Thread_workers<Worker> workers_;
   Volume_preserving_move mover_;
   std::unique_ptr<Boundary_projection<K>> projection_;   // NODT: the input's boundary
