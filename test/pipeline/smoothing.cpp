@@ -446,8 +446,8 @@ TEST(Visitor, ReportsEveryIteration)
                                                    Counting_visitor{&iterations, &classified, &all});
   EXPECT_EQ(code, CGAL::MAX_ITERATION_NUMBER_REACHED);
   EXPECT_EQ(iterations, 3u);   // the main phase's
-  EXPECT_GT(all, 3u);          // then the largest-angle phases', at most 3 each
-  EXPECT_LE(all, 9u);
+  EXPECT_GT(all, 3u);          // then the largest-angle and worst-cell phases', at most 3 each
+  EXPECT_LE(all, 12u);
   EXPECT_GT(classified, 0u);
 }
 
@@ -463,11 +463,13 @@ TEST(ReturnCodes, ConvergenceAndTimeLimitStopTheSweeps)
   std::size_t its = 0;
   C3t3 a = input.c3t3;
   // Every first-sweep move is far below a billion local sizes: converged after one
-  // sweep without flips (in each of the three phases), and after the first
-  // iteration with no flip with them.
+  // sweep without flips (in each of the three phases with sweeps; the worst-cell
+  // phase has none, and ends when the extremes stop improving), and after the
+  // first iteration with no flip with them.
   EXPECT_EQ(CGAL::bodt_optimize_mesh_3(a, CGAL::parameters::convergence = 1e9,
                                        CGAL::parameters::topology_optimization = false,
                                        CGAL::parameters::vertex_insertion = false,
+                                       CGAL::parameters::worst_cell_phase = false,
                                        CGAL::parameters::progress_visitor = Counter{&its}),
             CGAL::CONVERGENCE_REACHED);
   EXPECT_EQ(its, 3u);
