@@ -192,7 +192,7 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
  *   \cgalParamNBegin{worst_cell_phase}
  *     \cgalParamDescription{after the last phase, max-min steps and flips at the cells within 5 degrees of
  *       the mesh's worst, until an iteration raises neither extreme angle}
- *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{edge_contraction}
  *     \cgalParamDescription{in the last phase, vertices inside a subdomain or on a flat part of the surface

@@ -91,7 +91,7 @@ def smooth(points, tets=None, labels=None, triangles=None, triangle_labels=None,
     topology_optimization (True): flips after each sweep.
     vertex_insertion (True): vertices inserted at spades, caps, slivers and wedges.
     max_vertex_insertions (-1: 5% of the input's vertices): at most this many.
-    worst_cell_phase (True): after the last phase, max-min steps and flips at the
+    worst_cell_phase (False): after the last phase, max-min steps and flips at the
         cells within 5 degrees of the worst, until the extreme angles stop improving.
     edge_contraction (False): in the last phase, vertices inside a subdomain or on
         a flat part of the surface removed where that raises the worst cell.

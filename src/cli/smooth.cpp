@@ -294,9 +294,9 @@ Command add_smooth(CLI::App& command)
   command.add_flag("--no-guard", o->no_guard, "accept every valid move, even one that worsens the worst angles");
   command.add_flag("--no-flips", o->no_flips, "no topology optimization (flips)");
   command.add_flag("--no-insertion", o->no_insertion, "no vertex insertion");
-  command.add_flag("!--no-worst-cell-phase", o->smoothing.worst_cell_phase,
-                   "no final phase raising the worst cells (max-min steps and flips at the tetrahedra within 5 "
-                   "degrees of the worst, until the extreme angles stop improving)");
+  command.add_flag("--worst-cell-phase,!--no-worst-cell-phase", o->smoothing.worst_cell_phase,
+                   "a final phase raising the worst cells: max-min steps and flips at the tetrahedra within 5 "
+                   "degrees of the worst, until the extreme angles stop improving (default: off)");
   command.add_flag("--contraction,!--no-contraction", o->smoothing.edge_contraction,
                    "edge contraction: remove vertices inside a subdomain or on a flat part of the surface where "
                    "that raises the worst tetrahedron around them (default: off)");
