@@ -7,6 +7,7 @@
 // at work, what the flip pass's parallel rounds rely on, the largest-angle phase).
 #include "inputs/generated_inputs.h"
 #include "test_support.h"
+#include "../../bench/jittered_grid.h"
 
 #include <CGAL/BODT_3/Tet_mesh_conversion.h>
 #include <CGAL/BODT_3/IO/mesh_io.h>
@@ -954,51 +955,15 @@ TEST(Pipeline, EdgeContractionKeepsVolumesFeaturesCornersOnAnyNumberOfThreads)
   EXPECT_GT(total, 0u) << "no contraction: the checks would not reach it";
 }
 
-// The unit cube in n^3 cubes of six tetrahedra, inner vertices jittered by up to
-// `jitter` of a cube's side (as the benchmark's hard grids): one subdomain, no
-// boundary triangles; the pipeline ends it with angles above 30 degrees.
-BODT::Tet_mesh jittered_cube(int n, double jitter)
-{
-  CGAL::Random rng(7);
-  std::vector<Point> p;
-  auto id = [n](int i, int j, int k) { return (i * (n + 1) + j) * (n + 1) + k; };
-  for(int i = 0; i <= n; ++i)
-    for(int j = 0; j <= n; ++j)
-      for(int k = 0; k <= n; ++k)
-      {
-        double c[3] = {double(i) / n, double(j) / n, double(k) / n};
-        const int g[3] = {i, j, k};
-        for(int d = 0; d < 3; ++d)
-          if(g[d] > 0 && g[d] < n) c[d] += rng.get_double(-jitter, jitter) / n;
-        p.emplace_back(c[0], c[1], c[2]);
-      }
-  std::vector<std::array<int, 4>> tets;
-  const int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-      for(int k = 0; k < n; ++k)
-        for(const auto& o : order)
-        {
-          int c[3] = {i, j, k};
-          std::array<int, 4> t;
-          t[0] = id(c[0], c[1], c[2]);
-          for(int s = 0; s < 3; ++s)
-          {
-            ++c[o[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          tets.push_back(t);
-        }
-  return bodt_test::make_mesh(p, tets);
-}
-
 // The worst-cell phase on a mesh the phases before leave above their 30-degree
 // thresholds: it raises the smallest angle and never the largest, keeps validity
 // and the volume, ends by itself, and gives the same bytes on 1 and 2 threads;
 // switched off, the run is the three phases alone.
 TEST(Pipeline, WorstCellPhaseRaisesTheWorstCellAboveTheThresholds)
 {
-  const BODT::Tet_mesh input = jittered_cube(8, 0.15);
+  // The benchmark's hard grid: one subdomain, no boundary triangles; the phases
+  // before end it with angles above 30 degrees.
+  const BODT::Tet_mesh input = bodt_bench::jittered_grid(8, bodt_bench::Grid_kind::hard);
   struct Phases
   {
     std::size_t* worst_iterations;
