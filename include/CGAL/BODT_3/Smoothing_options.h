@@ -171,9 +171,9 @@ struct Smoothing_options
   /// smallest angle of meshes above 30 degrees by 1 to 6 degrees, but on the hard
   /// benchmark grids it took three to four times the whole run's time.
   bool worst_cell_phase = false;
-  /// In degrees. Chosen by measurement (doc/manual.md, "The worst-cell phase"):
-  /// 3, 5, 10 and 20 were tried; 10 and 20 raised a grid's smallest angle more at
-  /// up to seven times the run's time, 5 cost a few percent.
+  /// In degrees. Chosen by measurement (doc/manual.md, section 8, item 7): 3, 5,
+  /// 10 and 20 were tried on CGAL's sphere and a 30^3 grid; 10 and 20 raised the
+  /// grid's smallest angle more, at up to seven times the run's time.
   double worst_cell_margin = 5;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
