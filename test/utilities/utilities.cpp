@@ -210,3 +210,31 @@ TEST(AttemptHistory, FailedCellsAreRetriedAfterTheirWaitAndAChange)
   EXPECT_TRUE(h.worth_trying(cell));
   EXPECT_EQ(h.region_stamp[4], 9u);
 }
+
+// A failure is kept in 8 bytes: its fields hold what a run reaches and saturate
+// beyond, where a saturated value only lets the cell be tried sooner.
+TEST(AttemptHistory, FailureFieldsRoundTripAndSaturate)
+{
+  using Failure = BODT::internal::Attempt_history::Failure;
+  static_assert(sizeof(Failure) == 8);
+  const Failure f(123456789012ull, 4321, 7);
+  EXPECT_EQ(f.clock(), 123456789012ull);
+  EXPECT_EQ(f.pass(), 4321u);
+  EXPECT_EQ(f.count(), 7u);
+  const Failure g(std::size_t(1) << 41, 70000, 300);
+  EXPECT_EQ(g.clock(), (std::size_t(1) << 40) - 1);
+  EXPECT_EQ(g.pass(), 65535u);
+  EXPECT_EQ(g.count(), 255u);
+
+  BODT::internal::Attempt_history h;
+  h.region_stamp.assign(5, 0);
+  h.topology_stamp.assign(5, 0);
+  const std::array<int, 4> cell{0, 1, 2, 3};
+  h.clock = std::size_t(1) << 41;
+  h.pass = 70000;
+  h.record_failure(cell);
+  h.pass = 70001;
+  EXPECT_FALSE(h.worth_trying(cell));   // nothing changed since
+  h.region_stamp[1] = (std::size_t(1) << 40);   // after the saturated clock, not after the real one
+  EXPECT_TRUE(h.worth_trying(cell));
+}

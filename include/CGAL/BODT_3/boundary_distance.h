@@ -48,6 +48,7 @@ inline Boundary_triangles boundary_triangles(const Tet_mesh& mesh, int threads =
       out.emplace_back(p[0], p[1], p[2]);
     }
   }
+  out.shrink_to_fit();   // kept through the run, for the distance after it
   return out;
 }
 

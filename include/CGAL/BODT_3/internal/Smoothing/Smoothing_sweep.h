@@ -67,6 +67,17 @@ public:
     guard_.refresh();
   }
 
+  /// While the mesh's incidences are released (a flip pass that reads the
+  /// triangulation): the sweep order and the dependents, derived from them, go
+  /// too; `refresh`, or `derive_again` if the cells did not change, makes them again.
+  void release_derived()
+  {
+    order_ = Sweep_order();
+    std::vector<int>().swap(dependent_begin_);
+    std::vector<int>().swap(dependents_);
+  }
+  void derive_again() { derive(); }
+
   /// One sweep; fills the move counts of `stats`. Colour by colour: vertices of
   /// one colour share no cell and check no hull facet of one another, so their
   /// moves read nothing the others write; they run concurrently (`opt.threads`),

@@ -185,7 +185,7 @@ private:
   using Queue = std::priority_queue<Candidate, std::deque<Candidate>>;
 
   // Flips done in the pass, at most `max_flips`: 32 bits keep the maps of what
-  // was found useless at 12 and 20 bytes a slot (up to a billion cells).
+  // was found useless at 12 and 16 bytes a slot (up to a billion cells).
   using Flip_count = std::uint32_t;
 
   // What evaluating one cell found: its best flip, the edges and faces found
@@ -195,7 +195,7 @@ private:
   {
     Flip<Adapter> best;
     std::vector<std::array<int, 2>> useless_edges;
-    std::vector<std::array<int, 4>> useless_faces;
+    std::vector<std::array<int, 3>> useless_faces;
     std::array<int, 8> neighbourhood;
   };
 
@@ -295,13 +295,14 @@ private:
       const Cell_handle n = c->neighbor(i);
       const Vertex_handle apex = n->vertex(n->index(c));
       if(adapter_.triangulation().is_infinite(apex)) continue;
-      std::array<int, 4> key;   // the face's ids sorted, then the smaller apex
+      // The face's ids, sorted: its two apexes need not be part of the key, since
+      // another cell across it would be new, and its making touched the face's vertices.
+      std::array<int, 3> key;
       for(int k = 0, m = 0; k < 4; ++k)
         if(k != i) key[m++] = id[k];
-      std::sort(key.begin(), key.begin() + 3);
+      std::sort(key.begin(), key.end());
       const int apex_id = vertex_id(apex);
       ev.neighbourhood[4 + i] = apex_id;
-      key[3] = std::min(apex_id, id[i]);
       const Flip_count* known = useless_faces_.find(key);
       if(known && still_useless(*known, {id[0], id[1], id[2], id[3], apex_id})) continue;
       if(w.face_removal(ctx_, c, i, candidate) && candidate.improves())
@@ -340,17 +341,19 @@ private:
     if(flip.boundary) ++stats.boundary_flips;
   }
 
-  // The vertices of the created cells: their stars changed.
+  // The vertices of the created cells: their stars changed. Each goes into
+  // `touched` once per pass (the first time it is touched): a vertex may be in
+  // hundreds of flips of a pass, and the list was the pass's largest after its maps.
   template <class Vertex_id>
   void mark_touched(const Vertex_id& vertex_id, std::vector<Vertex_handle>& touched, Attempt_history* history)
   {
     for(Cell_handle n : created_)
       for(int k = 0; k < 4; ++k)
       {
-        touched.push_back(n->vertex(k));
         if(adapter_.triangulation().is_infinite(n->vertex(k))) continue;
         const int id = vertex_id(n->vertex(k));
         if(id >= static_cast<int>(touched_at_.size())) touched_at_.resize(id + 1, 0);
+        if(touched_at_[id] == 0) touched.push_back(n->vertex(k));
         touched_at_[id] = flips_done_;
         if(history) history->star_changed(id);
       }
@@ -380,7 +383,7 @@ private:
   std::vector<Evaluation> evaluations_;
   std::vector<Cell_handle> created_;
   Id_tuple_map<2, Flip_count> useless_edges_;
-  Id_tuple_map<4, Flip_count> useless_faces_;   // face ids and apex
+  Id_tuple_map<3, Flip_count> useless_faces_;
   std::vector<Flip_count> touched_at_;          // per vertex id: flips done when a flip last touched it
   Flip_count flips_done_ = 0;
 };
@@ -388,7 +391,7 @@ private:
 /// One flip pass (`Flip_pass`) on the triangulation behind `adapter`, on
 /// `threads` threads (as `Smoothing_options::threads`; the result does not depend on it).
 ///
-/// `touched` receives the vertices of every cell created (with repetitions).
+/// `touched` receives the finite vertices of the cells created, each once.
 /// `history` (optional) lets the pass skip cells tried in vain before whose
 /// neighbourhood has not changed since. `candidates` (optional, with the minimum
 /// dihedral sine or the largest angle as measure) are the cells the pass may start

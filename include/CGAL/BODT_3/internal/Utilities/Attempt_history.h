@@ -31,11 +31,26 @@ namespace internal {
 /// only a new connectivity around it does (doc/stages.md measures both).
 struct Attempt_history
 {
-  struct Failure   // 16 bytes: a map slot is 32
+  // When a cell last failed, in 8 bytes (a map slot is 24, with the sorted ids):
+  // on a Mesh_3 mesh the largest-angle phase's first pass tries nearly every cell.
+  // Each field saturates, which only lets a cell be tried sooner: a clock past
+  // 2^40 changes, a pass past 65535, and `count` past 255 (so `retries_after_moves`
+  // of 255 or more acts as never).
+  class Failure
   {
-    std::size_t clock;
-    std::uint32_t pass;
-    std::uint32_t count;
+  public:
+    Failure() = default;
+    Failure(std::size_t clock, std::size_t pass, std::size_t count)
+      : bits_(std::min<std::uint64_t>(clock, max_clock) << 24 | std::min<std::uint64_t>(pass, 0xFFFF) << 8 |
+              std::min<std::uint64_t>(count, 0xFF))
+    {}
+    std::size_t clock() const { return static_cast<std::size_t>(bits_ >> 24); }
+    std::size_t pass() const { return static_cast<std::size_t>(bits_ >> 8 & 0xFFFF); }
+    std::size_t count() const { return static_cast<std::size_t>(bits_ & 0xFF); }
+
+  private:
+    static constexpr std::uint64_t max_clock = (std::uint64_t(1) << 40) - 1;
+    std::uint64_t bits_ = 0;
   };
   std::size_t clock = 0;
   std::size_t pass = 0;   // set by the caller
@@ -47,6 +62,13 @@ struct Attempt_history
   static std::size_t stamp(const std::vector<std::size_t>& stamps, int v)
   {
     return v >= 0 && v < static_cast<int>(stamps.size()) ? stamps[v] : 0;
+  }
+
+  /// Frees the stamps, which the next pass sets again (`Mesh_optimizer::begin_pass`).
+  void end_pass()
+  {
+    std::vector<std::size_t>().swap(region_stamp);
+    std::vector<std::size_t>().swap(topology_stamp);
   }
 
   /// Marks vertex `v`'s star changed now (a flip or an insertion).
@@ -64,19 +86,19 @@ struct Attempt_history
     const Failure* found = failed.find(ids);
     if(!found) return true;
     const Failure& f = *found;
-    const std::size_t wait = std::size_t(1) << std::min<std::size_t>(f.count - 1, 3);
-    if(pass < f.pass + wait) return false;
-    const std::vector<std::size_t>& changes = f.count > retries_after_moves ? topology_stamp : region_stamp;
+    const std::size_t wait = std::size_t(1) << std::min<std::size_t>(f.count() - 1, 3);
+    if(pass < f.pass() + wait) return false;
+    const std::vector<std::size_t>& changes = f.count() > retries_after_moves ? topology_stamp : region_stamp;
     for(int v : ids)
-      if(stamp(changes, v) > f.clock) return true;
+      if(stamp(changes, v) > f.clock()) return true;
     return false;
   }
 
   void record_failure(const std::array<int, 4>& ids)
   {
     bool inserted;
-    Failure& f = failed.find_or_insert(ids, Failure{clock, static_cast<std::uint32_t>(pass), 1}, inserted);
-    if(!inserted) f = Failure{clock, static_cast<std::uint32_t>(pass), f.count + 1};
+    Failure& f = failed.find_or_insert(ids, Failure(clock, pass, 1), inserted);
+    if(!inserted) f = Failure(clock, pass, f.count() + 1);
   }
 };
 
