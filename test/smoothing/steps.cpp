@@ -12,12 +12,14 @@
 #include "test_support.h"
 
 #include <CGAL/BODT_3/Tet_mesh_conversion.h>
+#include <CGAL/BODT_3/internal/Classification/Tensor_voting.h>
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
 #include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
 #include <CGAL/BODT_3/internal/Smoothing/Boundary_distance_guard.h>
 #include <CGAL/BODT_3/internal/Smoothing/Local_smoothing.h>
 #include <CGAL/BODT_3/internal/Smoothing/Move_guard.h>
+#include <CGAL/BODT_3/internal/Moves/Volume_preserving_move.h>
 #include <CGAL/BODT_3/internal/Smoothing/Smoothing_sweep.h>
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
 #include <CGAL/Random.h>
@@ -26,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -376,6 +379,149 @@ TEST(SmoothingSweep, SameBitsOnAnyNumberOfThreads)
   const Sweep_run one = run_sweeps(3, 1), two = run_sweeps(3, 2);
   EXPECT_EQ(one.moved, two.moved);
   EXPECT_EQ(one.mesh.points, two.mesh.points);
+}
+
+namespace {
+
+struct Max_min_run
+{
+  Flat_mesh mesh;
+  std::size_t moves = 0;
+  double spent = 0;
+};
+
+// The volume budget of `mesh`, as if each subdomain's volume were `scale` times
+// what it is: below 1, each step takes a larger share of it.
+BI::Volume_budget scaled_budget(const Flat_mesh& mesh, double scale)
+{
+  std::map<int, double> volume;
+  for(std::size_t c = 0; c < mesh.cells.size(); ++c)
+  {
+    const auto& q = mesh.cells[c];
+    volume[mesh.subdomain[c]] += scale * CGAL::volume(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]], mesh.points[q[3]]);
+  }
+  return BI::Volume_budget(std::vector<std::pair<int, double>>(volume.begin(), volume.end()));
+}
+
+// The max-min steps of every vertex of the input of `run_sweeps`, through
+// `Smoothing_sweep::raise_worst` (searches judged ahead in blocks, on `threads` threads).
+Max_min_run max_min_by_sweep(double offset, double scale, int threads)
+{
+  Max_min_run r{sweep_input(offset)};
+  const BI::Vertex_classification classification =
+      BI::classify_vertices(r.mesh, BI::Feature_hints(), BI::Classification_options());
+  BODT::Smoothing_options opt;
+  opt.threads = threads;
+  BI::Volume_budget budget = scaled_budget(r.mesh, scale);
+  BI::Smoothing_sweep<K> sweep(r.mesh, classification, opt, extreme_angles(r.mesh), &budget);
+  BODT::Iteration_stats stats;
+  sweep.raise_worst(1.0, stats);
+  r.moves = stats.max_min_moves;
+  r.spent = budget.spent();
+  return r;
+}
+
+// The same steps one vertex after another, each on the mesh as the ones before
+// left it, through the guard's own `accepts` and `apply`: the compass search as it
+// was first written, before its searches were judged ahead.
+Max_min_run max_min_one_by_one(double offset, double scale)
+{
+  Max_min_run r{sweep_input(offset)};
+  Flat_mesh& mesh = r.mesh;
+  const BI::Vertex_classification classification =
+      BI::classify_vertices(mesh, BI::Feature_hints(), BI::Classification_options());
+  const BODT::Smoothing_options opt;
+  BI::Volume_budget budget = scaled_budget(mesh, scale);
+  Guard guard(mesh, true, extreme_angles(mesh), opt.quality_measure, 1, &budget);
+  std::vector<int> vertices;
+  for(std::size_t c = 0; c < mesh.cells.size(); ++c)
+    if(mesh.in_mesh[c] && guard.cell_quality(static_cast<int>(c)) < 1.0)
+      vertices.insert(vertices.end(), mesh.cells[c].begin(), mesh.cells[c].end());
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  const BI::Volume_preserving_move mover;
+  BI::Vertex_star<K> star;
+  Guard::Trial trial, best_trial;
+  for(int v : vertices)
+  {
+    const BI::Vertex_kind kind = classification.kind[v];
+    if(kind == BI::Vertex_kind::fixed) continue;
+    mesh.gather_star(v, star);
+    Vector feature(0, 0, 0);
+    if(kind == BI::Vertex_kind::feature)
+    {
+      const auto& nb = classification.curve_neighbors[v];
+      feature = nb[0] >= 0 ? mesh.points[nb[1]] - mesh.points[nb[0]] : BI::tensor_vote(star, opt.tensor_voting).direction;
+    }
+    Vector dirs[3];
+    const int n = mover.free_directions(star, kind, feature, dirs);
+    if(n == 0) continue;
+    double shortest = std::numeric_limits<double>::infinity();
+    for(const auto& c : star.cells)
+      for(const Point* p : {&c.a, &c.b, &c.c}) shortest = std::min(shortest, CGAL::squared_distance(star.x0, *p));
+    shortest = std::sqrt(shortest);
+    double worst = guard.worst_around(v);
+    bool moved = false;
+    int steps = 0;
+    for(double h = 0.2 * shortest; h > 1e-3 * shortest && steps < 200; ++steps)
+    {
+      Point best;
+      double best_worst = worst;
+      for(int d = 0; d < n; ++d)
+        for(double sign : {1.0, -1.0})
+        {
+          const Point p = mesh.points[v] + (sign * h) * dirs[d];
+          guard.allow(budget.allowance());
+          if(guard.accepts(v, p, trial) && Guard::accepted_worst(trial) > best_worst)
+          {
+            best_worst = Guard::accepted_worst(trial);
+            best = p;
+            std::swap(best_trial, trial);
+          }
+        }
+      if(best_worst > worst)
+      {
+        guard.apply(v, best, best_trial);
+        budget.spend(best_trial.cost);
+        worst = best_worst;
+        moved = true;
+      }
+      else
+        h *= 0.5;
+    }
+    r.moves += moved;
+  }
+  r.spent = budget.spent();
+  return r;
+}
+
+} // namespace
+
+// The max-min steps judge blocks of vertices ahead, concurrently, and apply each
+// search in order only if nothing it read changed since (a vertex it depends on
+// moved, or the budget shrank below a step it took), else make it again: the same
+// bits as one vertex after another, on 1, 2 and 4 threads. On a curved interface
+// whose moves the budget pays; 1e7 from the origin; and with budgets 1e5 and 1e7
+// times smaller, nearly spent by the steps, where the budget's check decides
+// (without it the one-by-one results differ there).
+TEST(SmoothingSweep, MaxMinStepsAreTheOneByOneStepsOnAnyNumberOfThreads)
+{
+  for(double offset : {0.0, 1e7})
+    for(double scale : {1.0, 1e-5, 1e-7})
+    {
+      const Max_min_run reference = max_min_one_by_one(offset, scale);
+      EXPECT_GT(reference.moves, 20u) << offset << " " << scale;
+      EXPECT_GT(reference.spent, 0.0) << offset << " " << scale;
+      EXPECT_LT(reference.spent, 1.0) << offset << " " << scale;
+      EXPECT_EQ(not_positive(reference.mesh), 0u);
+      for(int threads : {1, 2, 4})
+      {
+        const Max_min_run r = max_min_by_sweep(offset, scale, threads);
+        EXPECT_EQ(r.moves, reference.moves) << offset << " " << scale << ", " << threads << " threads";
+        EXPECT_EQ(r.spent, reference.spent) << offset << " " << scale << ", " << threads << " threads";
+        EXPECT_EQ(r.mesh.points, reference.mesh.points) << offset << " " << scale << ", " << threads << " threads";
+      }
+    }
 }
 
 namespace {

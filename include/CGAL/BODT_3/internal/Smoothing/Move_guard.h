@@ -185,6 +185,34 @@ public:
   /// cell qualities in the trial, for `apply`.
   bool accepts(int v, const Point& p, Trial& trial) const
   {
+    return judge(v, mesh_.points[v], p, nullptr, allowance_, trial);
+  }
+
+  /// What the vertex was judged against, for `accepts_from`: where it is, the
+  /// worst quality of its star's mesh cells there, and the allowance.
+  struct Vertex_state
+  {
+    Point position;
+    double worst;
+    double allowance;
+  };
+
+  /// `accepts` for `v` as if it were in `state` (its neighbours where they are):
+  /// a search that moves `v` several times can be judged without writing the
+  /// mesh, and applied later if nothing it read changed.
+  bool accepts_from(int v, const Vertex_state& state, const Point& p, Trial& trial) const
+  {
+    return judge(v, state.position, p, &state.worst, state.allowance, trial);
+  }
+
+  /// The allowance moves are judged against now.
+  double allowance() const { return allowance_; }
+
+private:
+  // `accepts` with v at x0, its star's worst quality `worst` (null: read from
+  // the mesh), and `allowance`.
+  bool judge(int v, const Point& x0, const Point& p, const double* worst, double allowance, Trial& trial) const
+  {
     const auto& m = mesh_;
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {
@@ -218,18 +246,18 @@ public:
           const int c = m.incidences[k].cell;
           if(!m.in_mesh[c]) continue;
           const auto& f = m.incidences[k].face;
-          trial.volume.add_move(m.subdomain[c], m.points[v], p, m.points[f[0]], m.points[f[1]], m.points[f[2]]);
+          trial.volume.add_move(m.subdomain[c], x0, p, m.points[f[0]], m.points[f[1]], m.points[f[2]]);
         }
       }
       trial.cost = budget_->cost(trial.volume);
-      if(!(trial.cost <= allowance_))
+      if(!(trial.cost <= allowance))
       {
         trial.last_refusal = Refusal::changes_volume;
         return false;
       }
     }
     trial.last_refusal = Refusal::worsens_quality;
-    if(quality_guard_ && !keeps_quality(v, p, trial)) return false;
+    if(quality_guard_ && !keeps_quality(v, p, worst ? *worst : worst_around(v), trial)) return false;
     if(distance_ && !stays_near_surface(v, p, trial))
     {
       trial.last_refusal = Refusal::leaves_surface;
@@ -238,8 +266,12 @@ public:
     return true;
   }
 
+public:
   /// Moves `v` to `p`, which `accepts(v, p, trial)` has just approved.
-  void apply(int v, const Point& p, const Trial& trial)
+  void apply(int v, const Point& p, const Trial& trial) { apply(v, p, trial.qualities); }
+
+  /// Moves `v` to `p`, with `qualities` those an approving trial left there.
+  void apply(int v, const Point& p, const std::vector<double>& qualities)
   {
     mesh_.points[v] = p;
     if(!quality_guard_) return;
@@ -247,17 +279,16 @@ public:
     for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
     {
       const int c = mesh_.incidences[k].cell;
-      if(mesh_.in_mesh[c]) quality_[c] = trial.qualities[i++];
+      if(mesh_.in_mesh[c]) quality_[c] = qualities[i++];
     }
   }
 
 private:
   // The quality part of `accepts`: the star's worst mesh cell is not worse at p,
   // and every mesh cell of the star is within the bounds.
-  bool keeps_quality(int v, const Point& p, Trial& trial) const
+  bool keeps_quality(int v, const Point& p, double old_worst, Trial& trial) const
   {
     const auto& m = mesh_;
-    const double old_worst = worst_around(v);
     trial.qualities.clear();
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {

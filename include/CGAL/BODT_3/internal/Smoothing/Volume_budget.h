@@ -134,10 +134,14 @@ public:
   bool limited() const { return limited_; }
 
   /// What one of `concurrent` steps judged together may cost.
-  double allowance(std::size_t concurrent = 1) const
+  double allowance(std::size_t concurrent = 1) const { return allowance_at(spent_, concurrent); }
+
+  /// What `allowance` would be with `spent` spent: for steps judged ahead and
+  /// paid later (the max-min steps), checked against what was spent meanwhile.
+  double allowance_at(double spent, std::size_t concurrent = 1) const
   {
     if(!limited_) return std::numeric_limits<double>::infinity();
-    return 0.5 * (1 - spent_) / static_cast<double>(std::max<std::size_t>(concurrent, 1));
+    return 0.5 * (1 - spent) / static_cast<double>(std::max<std::size_t>(concurrent, 1));
   }
 
   /// The cost of a change: infinite for a subdomain the budget does not know.
