@@ -294,7 +294,6 @@ private:
     stats.topology = flip_pass(adapter_, opt.flips, bounds_, vertex_id(), touched_, &history, opt.quality_measure,
                                known ? &measured : nullptr, options_.threads);
     clock_ = history.clock;
-    history.end_pass();
     if(release && stats.topology.total() == 0)
     {
       mesh_.build_incidences();
@@ -340,7 +339,6 @@ private:
     stats.contraction.seconds = timer_.time() - start;
     removal_budget_ -= stats.contraction.contractions;
     clock_ = contraction_history_.clock;
-    contraction_history_.end_pass();
     charge(result_.phases.contraction);
     for(int id : removed)
     {
@@ -368,7 +366,6 @@ private:
     stats.insertion.seconds = timer_.time() - start;
     insertion_budget_ -= stats.insertion.vertices_added;
     clock_ = insertion_history_.clock;
-    insertion_history_.end_pass();
     charge(result_.phases.insertion);
     if(stats.insertion.vertices_added > 0 || stats.insertion.undone > 0) reread(stats);
   }
@@ -378,7 +375,6 @@ private:
   void reread(Iteration_stats& stats)
   {
     const double start = timer_.time();
-    sweep_->release_derived();   // made again by its refresh below, after the incidences
     view_.refresh();
     view_.read_points();
     classification_.kind.resize(mesh_.number_of_vertices(), Vertex_kind::fixed);

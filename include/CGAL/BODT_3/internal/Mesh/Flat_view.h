@@ -13,7 +13,6 @@
 
 #include <CGAL/Kernel_traits.h>
 
-#include <algorithm>
 #include <array>
 #include <iterator>
 #include <map>
@@ -71,10 +70,13 @@ public:
   {
     Tr& tr = adapter_.triangulation();
     auto cp = tr.geom_traits().construct_point_3_object();
-    // At their size: grown by push_back, they would double past it.
-    const std::size_t n = std::max(handles_.size(), tr.number_of_vertices());
-    handles_.reserve(n);
-    mesh_.points.reserve(n);
+    // The first read makes them at their size (by push_back they would double
+    // past it); later ones, after insertions, grow them as push_back does.
+    if(handles_.empty())
+    {
+      handles_.reserve(tr.number_of_vertices());
+      mesh_.points.reserve(tr.number_of_vertices());
+    }
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
     {
       // A new vertex may live where a removed one did: it gets a new index.

@@ -64,13 +64,6 @@ struct Attempt_history
     return v >= 0 && v < static_cast<int>(stamps.size()) ? stamps[v] : 0;
   }
 
-  /// Frees the stamps, which the next pass sets again (`Mesh_optimizer::begin_pass`).
-  void end_pass()
-  {
-    std::vector<std::size_t>().swap(region_stamp);
-    std::vector<std::size_t>().swap(topology_stamp);
-  }
-
   /// Marks vertex `v`'s star changed now (a flip or an insertion).
   void star_changed(int v)
   {
