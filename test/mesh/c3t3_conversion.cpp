@@ -9,6 +9,7 @@
 #include <CGAL/BODT_3/Tet_mesh_conversion.h>
 #include <CGAL/BODT_3/IO/read_mesh_into_c3t3.h>
 #include <CGAL/BODT_3/mesh_quality.h>
+#include <CGAL/BODT_3/smooth.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
 
 #include <gtest/gtest.h>
@@ -504,6 +505,31 @@ TEST(C3t3Conversion, AllLabelsZeroMakeOneSubdomain)
   for(auto cell = c.cells_in_complex_begin(); cell != c.cells_in_complex_end(); ++cell)
     EXPECT_EQ(c.subdomain_index(cell), 1);
   EXPECT_EQ(c.number_of_facets_in_complex(), 8u);
+}
+
+// smooth(Tet_mesh&) frees the file's labels during its run and writes them again
+// at the end: labels all 0 stay all 0 (no subdomain is made up), one subdomain
+// and an outside keep theirs, and the cell count is the complex's.
+TEST(C3t3Conversion, SmoothingAFileMeshWritesItsLabelsAgain)
+{
+  const Tet_mesh input = BODT::c3t3_to_tet_mesh(make_input(Shape::two_subdomains, Size::small).c3t3);
+  std::set<int> file_labels(input.tet_labels.begin(), input.tet_labels.end());
+  ASSERT_EQ(file_labels.size(), 2u);
+  BODT::Smoothing_options opt;
+  opt.max_iteration_number = 2;
+  Tet_mesh zero = input;
+  std::fill(zero.tet_labels.begin(), zero.tet_labels.end(), 0);
+  BODT::smooth(zero, opt);
+  EXPECT_EQ(zero.tet_labels.size(), zero.tets.size());
+  EXPECT_EQ(std::set<int>(zero.tet_labels.begin(), zero.tet_labels.end()), std::set<int>{0});
+  Tet_mesh labelled = input;
+  const int outside = *file_labels.begin();
+  for(int& l : labelled.tet_labels)
+    if(l == outside) l = 0;
+  BODT::smooth(labelled, opt);
+  EXPECT_EQ(labelled.tet_labels.size(), labelled.tets.size());
+  EXPECT_EQ(std::set<int>(labelled.tet_labels.begin(), labelled.tet_labels.end()),
+            (std::set<int>{0, *file_labels.rbegin()}));
 }
 
 TEST(C3t3Conversion, IntegralPatchIndicesKeepTheFileLabels)

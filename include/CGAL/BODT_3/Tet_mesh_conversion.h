@@ -706,29 +706,18 @@ using Tet_mesh_triangulation = CGAL::Mesh_triangulation_3<
     Tet_mesh_cell_base_3<CGAL::Robust_weighted_circumcenter_filtered_traits_3<Tet_mesh::Kernel>>>::type;
 using Tet_mesh_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tet_mesh_triangulation, int, int>;
 
-/// Writes back into `mesh` what a pipeline did to `c3t3`, which
-/// `tet_mesh_to_c3t3(mesh, c3t3, file, &handles)` built:
-///  - points: every point keeps its index and gets its vertex's position; vertices
-///    added to the triangulation are appended (reference 0);
-///  - tets: the finite cells, labelled with their subdomain, or 0 outside the
-///    complex (0 for all when every input label was 0);
-///  - triangles (only if the input had some): the facets of the complex whose patch
-///    is a label of the input's triangles; a facet the input listed keeps its place
-///    and orientation, new ones (from flips and splits) follow, oriented as
-///    `c3t3_to_tet_mesh` orients them;
-///  - edges: the input's edges, each replaced in place by the curve edges it was
-///    split into; ridges follow their edges; corners and required vertices stay.
-/// `threads` (as `Smoothing_options::threads`) changes nothing in the result.
+namespace internal {
+
+// update_tet_mesh, told whether the file's tetrahedron labels were all 0: smooth()
+// frees the labels during its run.
 template <class C3T3>
 void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typename C3T3::Vertex_handle>& handles,
-                     int threads = 1)
+                     int threads, bool all_zero)
 {
-  using namespace internal;
   using Tr = typename C3T3::Triangulation;
   using Vertex_handle = typename Tr::Vertex_handle;
   const Tr& tr = c3t3.triangulation();
   const Complex_reader<C3T3> read(c3t3);
-  const bool all_zero = mesh.all_labels_zero();
 
   Handle_index_map<Vertex_handle> index_map;
   index_map.reset(tr.number_of_vertices());
@@ -867,6 +856,28 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
   mesh.edges.swap(edges);
   mesh.edge_labels.swap(edge_labels);
   mesh.ridges.swap(ridges);
+}
+
+} // namespace internal
+
+/// Writes back into `mesh` what a pipeline did to `c3t3`, which
+/// `tet_mesh_to_c3t3(mesh, c3t3, file, &handles)` built:
+///  - points: every point keeps its index and gets its vertex's position; vertices
+///    added to the triangulation are appended (reference 0);
+///  - tets: the finite cells, labelled with their subdomain, or 0 outside the
+///    complex (0 for all when every input label was 0);
+///  - triangles (only if the input had some): the facets of the complex whose patch
+///    is a label of the input's triangles; a facet the input listed keeps its place
+///    and orientation, new ones (from flips and splits) follow, oriented as
+///    `c3t3_to_tet_mesh` orients them;
+///  - edges: the input's edges, each replaced in place by the curve edges it was
+///    split into; ridges follow their edges; corners and required vertices stay.
+/// `threads` (as `Smoothing_options::threads`) changes nothing in the result.
+template <class C3T3>
+void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typename C3T3::Vertex_handle>& handles,
+                     int threads = 1)
+{
+  internal::update_tet_mesh(mesh, c3t3, handles, threads, mesh.all_labels_zero());
 }
 
 } // namespace BODT_3

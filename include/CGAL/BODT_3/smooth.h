@@ -17,9 +17,11 @@
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -146,7 +148,9 @@ struct Constraint_counting_visitor
 /// goes through the same pipeline, and comes back with `update_tet_mesh`. Its
 /// infinite cells only close the mesh, so its boundary need not stay convex where
 /// it is. Throws `Mesh_io_error` naming `tm.source` (the file it was read from) for
-/// a mesh no triangulation can hold.
+/// a mesh no triangulation can hold, leaving `tm` as it was. The tetrahedra, their
+/// labels and the points are freed during the run (the complex holds them): an
+/// exception after the conversion (out of memory) leaves `tm` without them.
 template <class Visitor = Null_smoothing_visitor>
 Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&& visitor = Visitor())
 {
@@ -181,6 +185,7 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   const double classification_start = timer.time();
   const internal::Vertex_classification by_file = internal::classify_vertices(flat, hints, internal::classification_options(options));
   flat = internal::Flat_mesh<K>();
+  hints = internal::Feature_hints();
   const double classification_seconds = timer.time() - classification_start;
 
   Tet_mesh_c3t3 c3t3;
@@ -191,6 +196,17 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   faces.reset();
   if(constraints.relabelled) tm.tet_labels.swap(constraints.subdomain);
   internal::add_constraints_to_complex(tm, constraints, handles, c3t3);
+  // The complex holds the tetrahedra, their labels and the positions now, and
+  // update_tet_mesh writes them again: freed for the run, they do not add to its
+  // peak memory. Only the points no tetrahedron uses (no vertex) are kept aside.
+  std::vector<std::array<int, 4>>().swap(tm.tets);
+  std::vector<int>().swap(tm.tet_labels);
+  std::vector<int>().swap(constraints.subdomain);
+  std::vector<std::pair<std::size_t, Tet_mesh::Point>> unused_points;
+  for(std::size_t i = 0; i < handles.size(); ++i)
+    if(handles[i] == Tet_mesh_c3t3::Vertex_handle()) unused_points.emplace_back(i, tm.points[i]);
+  const std::size_t file_points = tm.points.size();
+  std::vector<Tet_mesh::Point>().swap(tm.points);
 
   internal::C3t3_adapter<Tet_mesh_c3t3> adapter(c3t3, false);
   auto classify = [&](const auto& view, const internal::Classification_options&) {
@@ -217,7 +233,9 @@ Smoothing_result smooth(Tet_mesh& tm, const Smoothing_options& options, Visitor&
   Smoothing_result r = internal::optimize_mesh(adapter, classify, options, counting);
   counting.fill(r);
   const double back = timer.time();
-  update_tet_mesh(tm, c3t3, handles, options.threads);
+  tm.points.resize(file_points);
+  for(const auto& [i, p] : unused_points) tm.points[i] = p;
+  internal::update_tet_mesh(tm, c3t3, handles, options.threads, all_zero);
   for(int& l : tm.tet_labels)
   {
     const auto it = constraints.file_label.find(l);

@@ -568,6 +568,14 @@ private:
   {
     history.clock = clock_;
     history.pass = iteration_;
+    // Every pass stamps its history's vertices again: one pair of arrays, handed
+    // from history to history, serves them all.
+    if(stamped_ && stamped_ != &history)
+    {
+      history.region_stamp.swap(stamped_->region_stamp);
+      history.topology_stamp.swap(stamped_->topology_stamp);
+    }
+    stamped_ = &history;
     stamp_regions(history);
   }
 
@@ -579,7 +587,7 @@ private:
     workers_.for_each(0, static_cast<int>(mesh_.number_of_vertices()), [&](char&, int v) {
       std::size_t stamp = changed_at_[v], star = new_star_at_[v];
       for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
-        for(int u : mesh_.incidences[k].face)
+        for(int u : mesh_.face(mesh_.incidences[k]))
         {
           stamp = std::max(stamp, changed_at_[u]);
           star = std::max(star, new_star_at_[u]);
@@ -647,6 +655,7 @@ private:
   std::array<Attempt_history, 2> flip_histories_;   // by the minimum sine, by the largest angle
   Attempt_history insertion_history_;
   Attempt_history contraction_history_;
+  Attempt_history* stamped_ = nullptr;   // the history holding the stamp arrays
   std::vector<Cell_handle> insertion_candidates_;    // the insertion pass's
   std::vector<Vertex_handle> touched_;               // vertices whose star the last pass changed
   std::vector<Added_vertex<Vertex_handle>> added_;   // vertices the last insertion pass added

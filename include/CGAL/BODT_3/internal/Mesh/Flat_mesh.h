@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -33,10 +34,13 @@ struct Flat_mesh
 {
   using Point = typename K::Point_3;
 
+  /// A cell around a vertex: 4 bytes, the face opposite the vertex is read from
+  /// the cell (`face`). The cell's index times 4 fits 32 bits, as in `neighbor`.
   struct Incidence
   {
-    int cell;
-    std::array<int, 3> face;   // orientation(vertex, face) is positive
+    std::uint32_t slot;   // 4 * cell + the vertex's local index in it
+    int cell() const { return static_cast<int>(slot >> 2); }
+    int local() const { return static_cast<int>(slot & 3u); }
   };
 
   /// A hull facet (a, b, c) containing the vertex, with the interior on its
@@ -65,6 +69,15 @@ struct Flat_mesh
 
   std::size_t number_of_vertices() const { return points.size(); }
 
+  /// The face of the incidence's cell opposite its vertex, ordered so that
+  /// orientation(vertex, face) is positive.
+  std::array<int, 3> face(const Incidence& inc) const
+  {
+    const auto& q = cells[static_cast<std::size_t>(inc.cell())];
+    const auto& o = internal::facet_opposite[inc.local()];
+    return {q[o[0]], q[o[1]], q[o[2]]};
+  }
+
   /// Whether the facet of `cell` opposite local vertex `i` separates the mesh from
   /// what is not the mesh (its outside, or nothing).
   bool is_mesh_boundary(int cell, int i) const
@@ -84,10 +97,7 @@ struct Flat_mesh
     group_by_key<Incidence>(cells.size(), points.size(), threads, [this](std::size_t c, const auto& emit) {
       const auto& q = cells[c];
       for(int j = 0; j < 4; ++j)
-      {
-        const auto& o = internal::facet_opposite[j];
-        emit(static_cast<std::size_t>(q[j]), Incidence{static_cast<int>(c), {q[o[0]], q[o[1]], q[o[2]]}});
-      }
+        emit(static_cast<std::size_t>(q[j]), Incidence{static_cast<std::uint32_t>(4 * c + j)});
     }, incidence_begin, incidences);
 
     // Vertex -> boundary facets of the mesh around it, oriented outward (re-derived
@@ -143,8 +153,9 @@ struct Flat_mesh
     for(int k = incidence_begin[v]; k < incidence_begin[v + 1]; ++k)
     {
       const Incidence& inc = incidences[k];
-      if(!in_mesh[inc.cell]) continue;
-      star.cells.push_back({points[inc.face[0]], points[inc.face[1]], points[inc.face[2]], subdomain[inc.cell]});
+      if(!in_mesh[inc.cell()]) continue;
+      const auto f = face(inc);
+      star.cells.push_back({points[f[0]], points[f[1]], points[f[2]], subdomain[inc.cell()]});
     }
     for(int k = boundary_begin[v]; k < boundary_begin[v + 1]; ++k)
       star.boundary.push_back({points[boundary_facets[k][0]], points[boundary_facets[k][1]]});
