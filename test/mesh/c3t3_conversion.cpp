@@ -530,6 +530,12 @@ TEST(C3t3Conversion, SmoothingAFileMeshWritesItsLabelsAgain)
   EXPECT_EQ(labelled.tet_labels.size(), labelled.tets.size());
   EXPECT_EQ(std::set<int>(labelled.tet_labels.begin(), labelled.tet_labels.end()),
             (std::set<int>{0, *file_labels.rbegin()}));
+  // A point no tetrahedron uses has no vertex: it is kept aside while the points are freed.
+  Tet_mesh small = two_tets_and_outside();
+  BODT::smooth(small, opt);
+  ASSERT_EQ(small.points.size(), 7u);
+  EXPECT_EQ(small.points[6], Point(5, 5, 5));
+  EXPECT_EQ(small.tets.size(), 3u);
 }
 
 TEST(C3t3Conversion, IntegralPatchIndicesKeepTheFileLabels)

@@ -86,6 +86,9 @@ public:
       handles_.push_back(v);
       mesh_.points.push_back(cp(v->point()));
     }
+    // The incidences are derived again below: freed first, so that they are not
+    // held with the old and the new cell arrays of read_cells at once.
+    mesh_.release_incidences();
     read_cells();
     mesh_.hull_checks.clear();
     if(adapter_.convex_hull()) add_hull_checks();

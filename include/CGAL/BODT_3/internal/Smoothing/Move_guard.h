@@ -220,7 +220,7 @@ private:
     const auto& m = mesh_;
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {
-      const auto f = m.face(m.incidences[k]);
+      const auto& f = m.face(m.incidences[k]);
       if(CGAL::orientation(p, m.points[f[0]], m.points[f[1]], m.points[f[2]]) != CGAL::POSITIVE)
       {
         trial.last_refusal = m.in_mesh[m.incidences[k].cell()] ? Refusal::inverts_mesh_cell : Refusal::inverts_outside_cell;
@@ -249,7 +249,7 @@ private:
         {
           const int c = m.incidences[k].cell();
           if(!m.in_mesh[c]) continue;
-          const auto f = m.face(m.incidences[k]);
+          const auto& f = m.face(m.incidences[k]);
           trial.volume.add_move(m.subdomain[c], x0, p, m.points[f[0]], m.points[f[1]], m.points[f[2]]);
         }
       }
@@ -298,7 +298,7 @@ private:
     {
       const int c = m.incidences[k].cell();
       if(!m.in_mesh[c]) continue;
-      const auto f = m.face(m.incidences[k]);
+      const auto& f = m.face(m.incidences[k]);
       const Point &a = m.points[f[0]], &b = m.points[f[1]], &d = m.points[f[2]];
       // By the largest angle, the measure is made of the cosines the bounds check: computed once.
       std::array<double, 6> cosines;
