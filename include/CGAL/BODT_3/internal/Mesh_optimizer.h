@@ -587,7 +587,7 @@ private:
     workers_.for_each(0, static_cast<int>(mesh_.number_of_vertices()), [&](char&, int v) {
       std::size_t stamp = changed_at_[v], star = new_star_at_[v];
       for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
-        for(int u : mesh_.face(mesh_.incidences[k]))
+        for(int u : mesh_.incidences[k].face)
         {
           stamp = std::max(stamp, changed_at_[u]);
           star = std::max(star, new_star_at_[u]);

@@ -71,7 +71,7 @@ Tet_mesh_constraints find_constraints(const Tet_mesh& tm, const Flat_mesh<K>& fl
     int sides[2], found = 0;
     for(int k = flat.incidence_begin[t[0]]; k < flat.incidence_begin[t[0] + 1]; ++k)
     {
-      const int c = flat.incidences[k].cell();
+      const int c = flat.incidences[k].cell;
       for(int i = 0; i < 4; ++i)
         if(facet(c, i) == t && found < 2) sides[found++] = 4 * c + i;
     }

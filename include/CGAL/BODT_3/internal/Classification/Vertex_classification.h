@@ -130,7 +130,7 @@ void for_each_surface_facet(const Flat_mesh<K>& mesh, int v, const F& f)
 {
   for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
   {
-    const int c = mesh.incidences[k].cell();
+    const int c = mesh.incidences[k].cell;
     if(!mesh.in_mesh[c]) continue;
     for(int i = 0; i < 4; ++i)
     {
@@ -264,7 +264,7 @@ Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_
     std::map<int, std::vector<std::array<int, 2>>> side_boundary;
     for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
     {
-      const int c = mesh.incidences[k].cell();
+      const int c = mesh.incidences[k].cell;
       if(!mesh.in_mesh[c]) continue;
       auto& facets = side_boundary[mesh.subdomain[c]];
       for(int i = 0; i < 4; ++i)

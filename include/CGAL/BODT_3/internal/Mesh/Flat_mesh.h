@@ -38,9 +38,8 @@ struct Flat_mesh
   /// incidences, made the one-thread runs of the Mesh_3 benches 5% to 30% slower).
   struct Incidence
   {
-    int cell_index;
-    std::array<int, 3> face_ids;   // orientation(vertex, face) is positive
-    int cell() const { return cell_index; }
+    int cell;
+    std::array<int, 3> face;   // orientation(vertex, face) is positive
   };
 
   /// A hull facet (a, b, c) containing the vertex, with the interior on its
@@ -68,10 +67,6 @@ struct Flat_mesh
   int threads = 1;                         // for build_incidences (0: every core); changes no result
 
   std::size_t number_of_vertices() const { return points.size(); }
-
-  /// The face of the incidence's cell opposite its vertex, ordered so that
-  /// orientation(vertex, face) is positive.
-  const std::array<int, 3>& face(const Incidence& inc) const { return inc.face_ids; }
 
   /// Whether the facet of `cell` opposite local vertex `i` separates the mesh from
   /// what is not the mesh (its outside, or nothing).
@@ -151,9 +146,8 @@ struct Flat_mesh
     for(int k = incidence_begin[v]; k < incidence_begin[v + 1]; ++k)
     {
       const Incidence& inc = incidences[k];
-      if(!in_mesh[inc.cell()]) continue;
-      const auto f = face(inc);
-      star.cells.push_back({points[f[0]], points[f[1]], points[f[2]], subdomain[inc.cell()]});
+      if(!in_mesh[inc.cell]) continue;
+      star.cells.push_back({points[inc.face[0]], points[inc.face[1]], points[inc.face[2]], subdomain[inc.cell]});
     }
     for(int k = boundary_begin[v]; k < boundary_begin[v + 1]; ++k)
       star.boundary.push_back({points[boundary_facets[k][0]], points[boundary_facets[k][1]]});

@@ -114,7 +114,7 @@ public:
         bool one = mesh_.boundary_begin[v] == mesh_.boundary_begin[v + 1];
         for(int k = mesh_.incidence_begin[v]; one && k < mesh_.incidence_begin[v + 1]; ++k)
         {
-          const int c = mesh_.incidences[k].cell();
+          const int c = mesh_.incidences[k].cell;
           if(!mesh_.in_mesh[c]) continue;
           if(first < 0) first = c;
           one = mesh_.subdomain[c] == mesh_.subdomain[first];
@@ -157,10 +157,6 @@ public:
     return move(v, X, [](const Point& p) { return p; }, trial);
   }
 
-  /// Frees the cell qualities until the next `refresh` (during a pass that
-  /// replaces cells, when they are stale anyway).
-  void release_qualities() { std::vector<double>().swap(quality_); }
-
   /// The quality of cell `c` now.
   double cell_quality(int c) const { return quality_[c]; }
 
@@ -170,7 +166,7 @@ public:
     double worst = 2;
     for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
     {
-      const int c = mesh_.incidences[k].cell();
+      const int c = mesh_.incidences[k].cell;
       if(mesh_.in_mesh[c]) worst = std::min(worst, quality_[c]);
     }
     return worst;
@@ -220,10 +216,10 @@ private:
     const auto& m = mesh_;
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {
-      const auto& f = m.face(m.incidences[k]);
+      const auto& f = m.incidences[k].face;
       if(CGAL::orientation(p, m.points[f[0]], m.points[f[1]], m.points[f[2]]) != CGAL::POSITIVE)
       {
-        trial.last_refusal = m.in_mesh[m.incidences[k].cell()] ? Refusal::inverts_mesh_cell : Refusal::inverts_outside_cell;
+        trial.last_refusal = m.in_mesh[m.incidences[k].cell] ? Refusal::inverts_mesh_cell : Refusal::inverts_outside_cell;
         return false;
       }
     }
@@ -247,9 +243,9 @@ private:
         CGAL::Protect_FPU_rounding<true> upward;
         for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
         {
-          const int c = m.incidences[k].cell();
+          const int c = m.incidences[k].cell;
           if(!m.in_mesh[c]) continue;
-          const auto& f = m.face(m.incidences[k]);
+          const auto& f = m.incidences[k].face;
           trial.volume.add_move(m.subdomain[c], x0, p, m.points[f[0]], m.points[f[1]], m.points[f[2]]);
         }
       }
@@ -282,7 +278,7 @@ public:
     std::size_t i = 0;
     for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
     {
-      const int c = mesh_.incidences[k].cell();
+      const int c = mesh_.incidences[k].cell;
       if(mesh_.in_mesh[c]) quality_[c] = qualities[i++];
     }
   }
@@ -296,9 +292,9 @@ private:
     trial.qualities.clear();
     for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
     {
-      const int c = m.incidences[k].cell();
+      const int c = m.incidences[k].cell;
       if(!m.in_mesh[c]) continue;
-      const auto& f = m.face(m.incidences[k]);
+      const auto& f = m.incidences[k].face;
       const Point &a = m.points[f[0]], &b = m.points[f[1]], &d = m.points[f[2]];
       // By the largest angle, the measure is made of the cosines the bounds check: computed once.
       std::array<double, 6> cosines;

@@ -69,20 +69,14 @@ public:
 
   /// While the mesh's incidences are released (a flip pass that reads the
   /// triangulation): the sweep order and the dependents, derived from them, go
-  /// too, and the guard's cell qualities; `refresh`, or `derive_again` if the
-  /// cells did not change, makes them again.
+  /// too; `refresh`, or `derive_again` if the cells did not change, makes them again.
   void release_derived()
   {
     order_ = Sweep_order();
     std::vector<int>().swap(dependent_begin_);
     std::vector<int>().swap(dependents_);
-    guard_.release_qualities();
   }
-  void derive_again()
-  {
-    derive();
-    guard_.refresh();
-  }
+  void derive_again() { derive(); }
 
   /// One sweep; fills the move counts of `stats`. Colour by colour: vertices of
   /// one colour share no cell and check no hull facet of one another, so their
@@ -219,7 +213,7 @@ private:
         dependents_.push_back(w);
       };
       for(int k = mesh_.incidence_begin[u]; k < mesh_.incidence_begin[u + 1]; ++k)
-        for(int w : mesh_.face(mesh_.incidences[k])) add(w);
+        for(int w : mesh_.incidences[k].face) add(w);
       for(int k = mesh_.checked_begin[u]; k < mesh_.checked_begin[u + 1]; ++k) add(mesh_.checked_by[k]);
     }
     dependent_begin_[nv] = static_cast<int>(dependents_.size());

@@ -40,7 +40,7 @@ Sweep_order sweep_order(const Flat_mesh<K>& mesh, const std::vector<char>& movab
     };
     // A cell's vertices other than v are the incidence's face: read in place, not through the cells.
     for(int k = mesh.incidence_begin[v]; k < mesh.incidence_begin[v + 1]; ++k)
-      for(int u : mesh.face(mesh.incidences[k])) take(u);
+      for(int u : mesh.incidences[k].face) take(u);
     for(int k = mesh.hull_begin[v]; k < mesh.hull_begin[v + 1]; ++k) take(mesh.vertex_hull_checks[k][3]);
     for(int k = mesh.checked_begin[v]; k < mesh.checked_begin[v + 1]; ++k) take(mesh.checked_by[k]);
     int c = 0;
