@@ -13,6 +13,7 @@
 
 #include <CGAL/Kernel_traits.h>
 
+#include <algorithm>
 #include <array>
 #include <iterator>
 #include <map>
@@ -70,13 +71,12 @@ public:
   {
     Tr& tr = adapter_.triangulation();
     auto cp = tr.geom_traits().construct_point_3_object();
-    // The first read makes them at their size (by push_back they would double
-    // past it); later ones, after insertions, grow them as push_back does.
-    if(handles_.empty())
-    {
-      handles_.reserve(tr.number_of_vertices());
-      mesh_.points.reserve(tr.number_of_vertices());
-    }
+    // Made at their size: by push_back, a few inserted vertices would double them.
+    const std::size_t known = static_cast<std::size_t>(
+        std::count_if(handles_.begin(), handles_.end(), [](Vertex_handle v) { return v != Vertex_handle(); }));
+    const std::size_t size = handles_.size() + (tr.number_of_vertices() - known);
+    handles_.reserve(size);
+    mesh_.points.reserve(size);
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
     {
       // A new vertex may live where a removed one did: it gets a new index.
@@ -159,6 +159,7 @@ private:
     Tr& tr = adapter_.triangulation();
     std::vector<Cell_handle> before;
     before.swap(cells_);
+    cells_.reserve(tr.number_of_finite_cells());   // by push_back, up to twice their number
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
     const std::size_t nc = cells_.size();
     std::vector<std::array<int, 4>> cells_before;
@@ -218,6 +219,9 @@ private:
           entry = checked_infinite(n);
       }
     }, 1024);
+    std::vector<std::array<int, 4>>().swap(cells_before);
+    std::vector<int>().swap(neighbor_before);
+    std::vector<int>().swap(now);
     // The new cells: their vertices, and the neighbours not set from the other side.
     workers_.for_each(0, static_cast<int>(fresh.size()), [&](char&, int f) {
       const int k = fresh[static_cast<std::size_t>(f)];

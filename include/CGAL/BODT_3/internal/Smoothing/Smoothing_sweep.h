@@ -201,22 +201,32 @@ private:
     // The vertices to revisit when u moves: the movable vertices sharing a cell
     // with u, and those with a hull check whose far vertex is u. Flat (one array
     // for all): re-derived after every pass that changes the connectivity.
-    std::vector<int> stamp(nv, -1);
-    dependent_begin_.assign(nv + 1, 0);
-    dependents_.clear();
-    for(int u = 0; u < nv; ++u)
-    {
-      dependent_begin_[u] = static_cast<int>(dependents_.size());
+    // Counted first, then written, each vertex's on any thread (a stamp array per
+    // thread): grown by push_back, the array reached up to twice its size.
+    auto for_dependents = [&](std::vector<int>& stamp, int u, const auto& f) {
+      if(stamp.empty()) stamp.assign(static_cast<std::size_t>(nv), -1);
       auto add = [&](int w) {
         if(w == u || !movable[w] || stamp[w] == u) return;
         stamp[w] = u;
-        dependents_.push_back(w);
+        f(w);
       };
       for(int k = mesh_.incidence_begin[u]; k < mesh_.incidence_begin[u + 1]; ++k)
         for(int w : mesh_.incidences[k].face) add(w);
       for(int k = mesh_.checked_begin[u]; k < mesh_.checked_begin[u + 1]; ++k) add(mesh_.checked_by[k]);
-    }
-    dependent_begin_[nv] = static_cast<int>(dependents_.size());
+    };
+    dependent_begin_.assign(nv + 1, 0);
+    Thread_workers<std::vector<int>>(workers_.threads()).for_each(0, nv, [&](std::vector<int>& stamp, int u) {
+      int count = 0;
+      for_dependents(stamp, u, [&count](int) { ++count; });
+      dependent_begin_[u + 1] = count;
+    }, 1024);
+    for(int u = 0; u < nv; ++u) dependent_begin_[u + 1] += dependent_begin_[u];
+    std::vector<int>().swap(dependents_);
+    dependents_.resize(static_cast<std::size_t>(dependent_begin_[nv]));
+    Thread_workers<std::vector<int>>(workers_.threads()).for_each(0, nv, [&](std::vector<int>& stamp, int u) {
+      int next = dependent_begin_[u];
+      for_dependents(stamp, u, [&](int w) { dependents_[next++] = w; });
+    }, 1024);
   }
 
   // The direction of the curve through a feature vertex: the chord of its two

@@ -38,7 +38,7 @@ public:
   const Value* find(const Key& key) const
   {
     if(slots_.empty()) return nullptr;
-    for(std::size_t s = slot(key);; s = (s + 1) & (slots_.size() - 1))
+    for(std::size_t s = slot(key);; s = next(s))
     {
       const Slot& x = slots_[s];
       if(x.key[0] == empty) return nullptr;
@@ -51,7 +51,7 @@ public:
   {
     CGAL_precondition(key[0] != empty);
     if(4 * (size_ + 1) > 3 * slots_.size()) grow();
-    for(std::size_t s = slot(key);; s = (s + 1) & (slots_.size() - 1))
+    for(std::size_t s = slot(key);; s = next(s))
     {
       Slot& x = slots_[s];
       if(x.key == key)
@@ -90,14 +90,19 @@ private:
   {
     std::uint64_t h = 0;
     for(int x : key) h = (h ^ static_cast<std::uint32_t>(x)) * 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(h >> 32) & (slots_.size() - 1);
+    // The hash's high 32 bits scaled to the number of slots, which need not be a power of two.
+    return static_cast<std::size_t>(((h >> 32) * slots_.size()) >> 32);
   }
+
+  std::size_t next(std::size_t s) const { return s + 1 == slots_.size() ? 0 : s + 1; }
 
   void grow()
   {
     std::vector<Slot> old;
     old.swap(slots_);
-    slots_.assign(old.empty() ? 64 : 2 * old.size(), Slot{empty_key(), Value()});
+    // By half again, not twice: the flip pass's maps are its largest arrays, and
+    // doubled they were three eighths to three quarters full (now half to three quarters).
+    slots_.assign(old.empty() ? 64 : old.size() + old.size() / 2, Slot{empty_key(), Value()});
     size_ = 0;
     for(const Slot& x : old)
       if(x.key[0] != empty)
@@ -114,7 +119,7 @@ private:
     return k;
   }
 
-  std::vector<Slot> slots_;   // a power of two, at most half full
+  std::vector<Slot> slots_;   // at most three quarters full
   std::size_t size_ = 0;
 };
 
