@@ -297,7 +297,7 @@ private:
     if(release && stats.topology.total() == 0)
     {
       mesh_.build_incidences();
-      sweep_->derive_again();
+      sweep_->derive();
     }
     stats.topology.seconds = timer_.time() - start;
     charge(result_.phases.flips);

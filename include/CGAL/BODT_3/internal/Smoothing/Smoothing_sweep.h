@@ -69,14 +69,13 @@ public:
 
   /// While the mesh's incidences are released (a flip pass that reads the
   /// triangulation): the sweep order and the dependents, derived from them, go
-  /// too; `refresh`, or `derive_again` if the cells did not change, makes them again.
+  /// too; `refresh`, or `derive` if the cells did not change, makes them again.
   void release_derived()
   {
     order_ = Sweep_order();
     std::vector<int>().swap(dependent_begin_);
     std::vector<int>().swap(dependents_);
   }
-  void derive_again() { derive(); }
 
   /// One sweep; fills the move counts of `stats`. Colour by colour: vertices of
   /// one colour share no cell and check no hull facet of one another, so their
@@ -187,11 +186,10 @@ public:
   /// Whether vertex `v` moved so far.
   bool has_moved(int v) const { return moved_once_[v] != 0; }
 
-private:
-  // The sweep order and, per vertex, the vertices whose move depends on it: a
-  // vertex whose last move was zero, frozen or refused gets the same verdict again
-  // until a vertex of its star, or the far vertex of one of its hull checks, moves;
-  // such vertices are skipped, which changes no result.
+  /// Derives the sweep order and, per vertex, the vertices whose move depends on
+  /// it: a vertex whose last move was zero, frozen or refused gets the same verdict
+  /// again until a vertex of its star, or the far vertex of one of its hull checks,
+  /// moves; such vertices are skipped, which changes no result.
   void derive()
   {
     const int nv = static_cast<int>(mesh_.number_of_vertices());
@@ -228,6 +226,8 @@ private:
       for_dependents(stamp, u, [&](int w) { dependents_[next++] = w; });
     }, 1024);
   }
+
+private:
 
   // The direction of the curve through a feature vertex: the chord of its two
   // curve neighbours, or tensor voting's where the curve is not known (zero for
