@@ -228,7 +228,6 @@ public:
   }
 
 private:
-
   // The direction of the curve through a feature vertex: the chord of its two
   // curve neighbours, or tensor voting's where the curve is not known (zero for
   // other vertices). The neighbours share a cell with it (the colouring relies on it).
