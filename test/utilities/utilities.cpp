@@ -2,14 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The utilities the stages share (internal/Utilities/): the flat view's handle
-// index, the flip pass's tuple map, the parallel grouping, face matching, and the
-// flip and insertion passes' history of failed attempts.
+// index, the flip pass's tuple map, the parallel grouping, arrays first touched
+// on all threads, face matching, and the flip and insertion passes' history of
+// failed attempts.
 #include "delaunay_cells.h"
 
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
 #include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/first_touch.h>
 #include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
 #include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
 #include <CGAL/Random.h>
@@ -41,22 +43,34 @@ TEST(HandleIndexMap, FindsWhatWasInsertedThroughGrowth)
   EXPECT_EQ(map.size(), 0u);
 }
 
-// Handles inserted from several threads at once are found with their index.
-TEST(HandleIndexMap, InsertAllFromThreadsFindsEveryHandle)
+// Arrays whose pages are first written on several threads: above the size where
+// the pages are touched (4 MB), the elements are still what `assign` and `resize`
+// make; a vector that has room keeps its storage (and its elements up to the size).
+TEST(FirstTouch, FreshArraysHoldTheirValuesOnAnyNumberOfThreads)
 {
-  std::vector<int> storage(50000), others(100);
-  std::vector<int*> handles;
-  for(int& x : storage) handles.push_back(&x);
+  namespace I = CGAL::BODT_3::internal;
+  const std::size_t n = (std::size_t(6) << 20) / sizeof(int) + 123;
   for(int threads : {1, 2, 4})
   {
-    CGAL::BODT_3::internal::Handle_index_map<int*> map;
-    map.reset(handles.size() / 4);   // grows before the threads insert
-    CGAL::BODT_3::internal::Thread_workers<char> workers(threads);
-    map.insert_all(handles, workers);
-    EXPECT_EQ(map.size(), handles.size());
-    for(std::size_t i = 0; i < handles.size(); ++i) ASSERT_EQ(map.find(handles[i]), static_cast<int>(i));
-    for(int& x : others) EXPECT_EQ(map.find(&x), -1);
-    EXPECT_FALSE(map.insert(handles[9], 1));
+    std::vector<int> a{5, 6};
+    I::assign_fresh(a, n, -7, threads);
+    ASSERT_EQ(a.size(), n);
+    EXPECT_EQ(std::count(a.begin(), a.end(), -7), static_cast<std::ptrdiff_t>(n));
+
+    std::vector<std::array<int, 4>> r(3, std::array<int, 4>{1, 2, 3, 4});
+    I::resize_for_overwrite(r, n / 4, threads);
+    ASSERT_EQ(r.size(), n / 4);
+    EXPECT_EQ(std::count(r.begin(), r.end(), std::array<int, 4>{0, 0, 0, 0}), static_cast<std::ptrdiff_t>(n / 4));
+
+    const int* storage = a.data();
+    I::resize_for_overwrite(a, n / 2, threads);
+    EXPECT_EQ(a.data(), storage);
+    EXPECT_EQ(a[n / 2 - 1], -7);
+
+    std::vector<char> c;
+    I::reserve_fresh(c, n, threads);
+    EXPECT_TRUE(c.empty());
+    EXPECT_GE(c.capacity(), n);
   }
 }
 

@@ -7,6 +7,7 @@
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/BODT_3/Tet_mesh_cell_base_3.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/first_touch.h>
 #include <CGAL/BODT_3/internal/Utilities/facet_surface_centers.h>
 #include <CGAL/BODT_3/internal/Utilities/id_keys.h>
 #include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
@@ -234,7 +235,7 @@ void glue_finite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
     }
   // The cells, one after the other (the container is not thread-safe); then each
   // cell's neighbours and each vertex's first cell, written by their owner in parallel.
-  s.cells.resize(nt);
+  resize_for_overwrite(s.cells, nt, s.threads);
   for(std::size_t t = 0; t < nt; ++t)
   {
     const auto& q = mesh.tets[t];
@@ -743,10 +744,10 @@ void update_tet_mesh(Tet_mesh& mesh, const C3T3& c3t3, const std::vector<typenam
   // The cells in the triangulation's order, then their vertex indices (lookups
   // only) in parallel.
   std::vector<typename Tr::Cell_handle> finite;
-  finite.reserve(tr.number_of_cells());   // not number_of_finite_cells(), which counts them one by one
+  reserve_fresh(finite, tr.number_of_cells(), threads);   // not number_of_finite_cells(), which counts them one by one
   for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) finite.push_back(c);
-  mesh.tets.resize(finite.size());
-  mesh.tet_labels.resize(finite.size());
+  resize_for_overwrite(mesh.tets, finite.size(), threads);
+  resize_for_overwrite(mesh.tet_labels, finite.size(), threads);
   std::atomic<bool> unindexed{false};
   Thread_workers<char>(threads).for_each(0, static_cast<int>(finite.size()), [&](char&, int t) {
     const auto c = finite[t];

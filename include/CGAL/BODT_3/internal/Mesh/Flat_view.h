@@ -7,7 +7,7 @@
 #include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
 #include <CGAL/BODT_3/internal/Utilities/bare_point.h>
 #include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
-#include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
+#include <CGAL/BODT_3/internal/Utilities/first_touch.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
 
@@ -159,7 +159,8 @@ private:
     Tr& tr = adapter_.triangulation();
     std::vector<Cell_handle> before;
     before.swap(cells_);
-    cells_.reserve(tr.number_of_finite_cells());   // by push_back, up to twice their number
+    const int threads = workers_.threads();
+    reserve_fresh(cells_, tr.number_of_finite_cells(), threads);   // by push_back, up to twice their number
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
     const std::size_t nc = cells_.size();
     std::vector<std::array<int, 4>> cells_before;
@@ -169,12 +170,13 @@ private:
     std::vector<int> now = same_slots(before);   // per cell before: its index now, or -1
     std::vector<Cell_handle>().swap(before);
 
-    mesh_.cells.resize(nc);
-    resize_for_overwrite(mesh_.in_mesh, nc);
-    resize_for_overwrite(mesh_.subdomain, nc);
-    mesh_.neighbor.assign(4 * nc, unknown_neighbor);
+    resize_for_overwrite(mesh_.cells, nc, threads);
+    resize_for_overwrite(mesh_.in_mesh, nc, threads);
+    resize_for_overwrite(mesh_.subdomain, nc, threads);
+    assign_fresh(mesh_.neighbor, 4 * nc, unknown_neighbor, threads);
     // A slot that holds a new cell, or a cell changed in place, has other vertices: it is new.
-    std::vector<char> is_new(nc, 1);
+    std::vector<char> is_new;
+    assign_fresh(is_new, nc, char(1), threads);
     const int n_before = static_cast<int>(now.size());
     workers_.for_each(0, n_before, [&](char&, int j) {
       const int k = now[static_cast<std::size_t>(j)];

@@ -11,6 +11,7 @@
 #include <CGAL/BODT_3/Smoothing_result.h>
 #include <CGAL/BODT_3/internal/Classification/Tensor_voting.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/first_touch.h>
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
 #include <CGAL/BODT_3/internal/Moves/Volume_preserving_move.h>
 #include <CGAL/BODT_3/internal/Smoothing/sweep_order.h>
@@ -220,7 +221,7 @@ public:
     }, 1024);
     for(int u = 0; u < nv; ++u) dependent_begin_[u + 1] += dependent_begin_[u];
     std::vector<int>().swap(dependents_);
-    dependents_.resize(static_cast<std::size_t>(dependent_begin_[nv]));
+    resize_for_overwrite(dependents_, static_cast<std::size_t>(dependent_begin_[nv]), workers_.threads());
     Thread_workers<std::vector<int>>(workers_.threads()).for_each(0, nv, [&](std::vector<int>& stamp, int u) {
       int next = dependent_begin_[u];
       for_dependents(stamp, u, [&](int w) { dependents_[next++] = w; });

@@ -3,7 +3,7 @@
 #ifndef CGAL_BODT_3_INTERNAL_UTILITIES_HANDLE_INDEX_MAP_H
 #define CGAL_BODT_3_INTERNAL_UTILITIES_HANDLE_INDEX_MAP_H
 
-#include <atomic>
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -50,7 +50,7 @@ public:
     const std::uintptr_t key = address(h);
     for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
     {
-      const std::uintptr_t k = keys_[s].load(std::memory_order_relaxed);
+      const std::uintptr_t k = keys_[s];
       if(k == key)
       {
         index_[s] = index;
@@ -58,25 +58,12 @@ public:
       }
       if(k == 0)
       {
-        keys_[s].store(key, std::memory_order_relaxed);
+        keys_[s] = key;
         index_[s] = index;
         ++size_;
         return;
       }
     }
-  }
-
-  /// Inserts (handles[i], i) for every i, from `workers` threads (Thread_workers.h),
-  /// into a map that holds none of them. Slots are claimed by compare-and-swap, so
-  /// where an entry lands depends on the threads, what `find` returns does not.
-  template <class Workers>
-  void insert_all(const std::vector<Handle>& handles, Workers& workers)
-  {
-    while(2 * (size_ + handles.size()) > capacity_) grow();
-    workers.for_each(0, static_cast<int>(handles.size()), [&](auto&, int i) {
-      place(address(handles[static_cast<std::size_t>(i)]), i);
-    }, 4096);
-    size_ += handles.size();
   }
 
   /// The index of h, or -1.
@@ -86,7 +73,7 @@ public:
     const std::uintptr_t key = address(h);
     for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
     {
-      const std::uintptr_t k = keys_[s].load(std::memory_order_relaxed);
+      const std::uintptr_t k = keys_[s];
       if(k == key) return index_[s];
       if(k == 0) return -1;
     }
@@ -108,13 +95,13 @@ private:
   {
     for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
     {
-      std::uintptr_t expected = 0;
-      if(keys_[s].compare_exchange_strong(expected, key, std::memory_order_relaxed))
+      if(keys_[s] == key) return false;
+      if(keys_[s] == 0)
       {
+        keys_[s] = key;
         index_[s] = index;
         return true;
       }
-      if(expected == key) return false;
     }
   }
 
@@ -122,28 +109,27 @@ private:
   {
     if(capacity != capacity_)
     {
-      keys_.reset(new std::atomic<std::uintptr_t>[capacity]);
+      keys_.reset(new std::uintptr_t[capacity]);
       index_.reset(new int[capacity]);
       capacity_ = capacity;
     }
-    for(std::size_t s = 0; s < capacity_; ++s) keys_[s].store(0, std::memory_order_relaxed);
+    std::fill(keys_.get(), keys_.get() + capacity_, std::uintptr_t(0));
   }
 
   void grow()
   {
-    std::unique_ptr<std::atomic<std::uintptr_t>[]> keys = std::move(keys_);
+    std::unique_ptr<std::uintptr_t[]> keys = std::move(keys_);
     std::unique_ptr<int[]> index = std::move(index_);
     const std::size_t old = capacity_;
     capacity_ = 0;
     allocate(old == 0 ? 16 : 2 * old);
     for(std::size_t s = 0; s < old; ++s)
     {
-      const std::uintptr_t k = keys[s].load(std::memory_order_relaxed);
-      if(k != 0) place(k, index[s]);
+      if(keys[s] != 0) place(keys[s], index[s]);
     }
   }
 
-  std::unique_ptr<std::atomic<std::uintptr_t>[]> keys_;
+  std::unique_ptr<std::uintptr_t[]> keys_;
   std::unique_ptr<int[]> index_;
   std::size_t capacity_ = 0;
   std::size_t size_ = 0;

@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_INTERNAL_UTILITIES_GROUP_BY_KEY_H
 
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/first_touch.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -12,16 +13,6 @@
 namespace CGAL {
 namespace BODT_3 {
 namespace internal {
-
-/// Sets `v` to `n` elements that the caller then overwrites all: growing by
-/// `resize` alone would double the capacity and copy the old elements, holding
-/// both arrays at once; here a larger `v` is dropped first and made at its size.
-template <class T>
-void resize_for_overwrite(std::vector<T>& v, std::size_t n)
-{
-  if(n > v.capacity()) std::vector<T>().swap(v);
-  v.resize(n);
-}
 
 /// Groups values by an integer key in [0, `keys`), stably (a counting sort): the
 /// values of key k are `values[begin[k]]` to `values[begin[k + 1] - 1]`, in the
@@ -63,7 +54,7 @@ void group_by_key(std::size_t items, std::size_t keys, int threads, const Each& 
     }
   }
   begin[keys] = offset;
-  resize_for_overwrite(values, static_cast<std::size_t>(offset));
+  resize_for_overwrite(values, static_cast<std::size_t>(offset), threads);
   for_parts([&](std::vector<int>& fill, std::size_t first, std::size_t last) {
     for(std::size_t i = first; i < last; ++i)
       each(i, [&](std::size_t key, const Value& v) { values[static_cast<std::size_t>(fill[key]++)] = v; });

@@ -5,6 +5,7 @@
 
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
+#include <CGAL/BODT_3/internal/Utilities/first_touch.h>
 
 #include <algorithm>
 #include <array>
@@ -48,7 +49,7 @@ struct Tet_face_matching
     // Each face is matched at its smallest vertex: the faces of the cells around a
     // vertex that have it as smallest vertex, sorted by their two other vertices,
     // pair up with their equals. Vertices are independent: they run in parallel.
-    match.assign(4 * nc, -1);
+    assign_fresh(match, 4 * nc, -1, threads);
     Thread_workers<Worker> workers(threads);
     workers.for_each(0, static_cast<int>(number_of_points), [&](Worker& w, int v) {
       auto& faces = w.faces;
