@@ -33,8 +33,9 @@ inline void touch_pages(void* p, std::size_t bytes, int threads)
   }, 1);
 }
 
-/// Makes room for `n` elements of `v` without a copy of the old ones, its pages
-/// made resident on `threads` threads (`touch_pages`).
+/// Makes room for `n` elements of `v`. A `v` without that room is emptied first
+/// (its elements are not copied) and gets storage for exactly `n`, its pages made
+/// resident on `threads` threads (`touch_pages`); one with room keeps its elements.
 template <class T>
 void reserve_fresh(std::vector<T>& v, std::size_t n, int threads)
 {
@@ -48,7 +49,7 @@ void reserve_fresh(std::vector<T>& v, std::size_t n, int threads)
 /// `resize` alone would double the capacity and copy the old elements, holding
 /// both arrays at once; here a larger `v` is dropped first and made at its size.
 template <class T>
-void resize_for_overwrite(std::vector<T>& v, std::size_t n, int threads = 1)
+void resize_for_overwrite(std::vector<T>& v, std::size_t n, int threads)
 {
   reserve_fresh(v, n, threads);
   v.resize(n);
