@@ -160,7 +160,7 @@ private:
     std::vector<Cell_handle> before;
     before.swap(cells_);
     const int threads = workers_.threads();
-    reserve_fresh(cells_, tr.number_of_finite_cells(), threads);   // by push_back, up to twice their number
+    reserve_fresh(cells_, tr.number_of_finite_cells(), threads);   // push_back alone would hold up to twice their number
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
     const std::size_t nc = cells_.size();
     std::vector<std::array<int, 4>> cells_before;

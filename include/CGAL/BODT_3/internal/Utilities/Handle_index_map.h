@@ -48,22 +48,13 @@ public:
   {
     if(2 * (size_ + 1) > capacity_) grow();
     const std::uintptr_t key = address(h);
-    for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
+    const std::size_t s = probe(key);
+    if(keys_[s] == 0)
     {
-      const std::uintptr_t k = keys_[s];
-      if(k == key)
-      {
-        index_[s] = index;
-        return;
-      }
-      if(k == 0)
-      {
-        keys_[s] = key;
-        index_[s] = index;
-        ++size_;
-        return;
-      }
+      keys_[s] = key;
+      ++size_;
     }
+    index_[s] = index;
   }
 
   /// The index of h, or -1.
@@ -71,12 +62,8 @@ public:
   {
     if(capacity_ == 0) return -1;
     const std::uintptr_t key = address(h);
-    for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
-    {
-      const std::uintptr_t k = keys_[s];
-      if(k == key) return index_[s];
-      if(k == 0) return -1;
-    }
+    const std::size_t s = probe(key);
+    return keys_[s] == key ? index_[s] : -1;
   }
 
 private:
@@ -89,20 +76,23 @@ private:
     return static_cast<std::size_t>(mixed >> 32) & (capacity_ - 1);
   }
 
-  // Claims the first free slot from key's (key 0 marks a free slot: no element
-  // lives at address 0); false when the key is there already.
+  // The slot that holds key, or else the free slot where it goes (key 0 marks a
+  // free slot: no element lives at address 0).
+  std::size_t probe(std::uintptr_t key) const
+  {
+    std::size_t s = slot(key);
+    while(keys_[s] != key && keys_[s] != 0) s = (s + 1) & (capacity_ - 1);
+    return s;
+  }
+
+  // Claims key's slot; false when the key is there already.
   bool place(std::uintptr_t key, int index)
   {
-    for(std::size_t s = slot(key);; s = (s + 1) & (capacity_ - 1))
-    {
-      if(keys_[s] == key) return false;
-      if(keys_[s] == 0)
-      {
-        keys_[s] = key;
-        index_[s] = index;
-        return true;
-      }
-    }
+    const std::size_t s = probe(key);
+    if(keys_[s] == key) return false;
+    keys_[s] = key;
+    index_[s] = index;
+    return true;
   }
 
   void allocate(std::size_t capacity)
