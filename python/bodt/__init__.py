@@ -93,6 +93,10 @@ def smooth(points, tets=None, labels=None, triangles=None, triangle_labels=None,
     max_vertex_insertions (-1: 5% of the input's vertices): at most this many.
     worst_cell_phase (False): after the last phase, max-min steps and flips at the
         cells within 5 degrees of the worst, until the extreme angles stop improving.
+    ear_splits (False): boundary ears (two boundary faces meeting above the
+        largest-angle threshold) split at their inner edge, in the main and the
+        largest-angle phases: a lower largest angle on curved Mesh_3 outputs, at
+        some cost in the smallest on some meshes.
     edge_contraction (False): in the last phase, vertices inside a subdomain or on
         a flat part of the surface removed where that raises the worst cell.
     max_vertex_removals (-1: 5% of the input's vertices): at most this many.

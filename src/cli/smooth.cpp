@@ -331,6 +331,11 @@ Command add_smooth(CLI::App& command)
   command.add_flag("--no-guard", o->no_guard, "accept every valid move, even one that worsens the worst angles");
   command.add_flag("--no-flips", o->no_flips, "no topology optimization (flips)");
   command.add_flag("--no-insertion", o->no_insertion, "no vertex insertion");
+  command.add_flag("--ear-splits,!--no-ear-splits", o->smoothing.ear_splits,
+                   "in the main and the largest-angle phases, split boundary ears: a tetrahedron whose two boundary "
+                   "faces meet at an angle above --largest-angle-threshold, which no move or flip lowers, gets a "
+                   "vertex on its opposite edge where that improves the tetrahedra around (default: off; a lower "
+                   "largest angle on curved surfaces, sometimes a lower smallest one: doc/manual.md)");
   command.add_flag("--worst-cell-phase,!--no-worst-cell-phase", o->smoothing.worst_cell_phase,
                    "a final phase raising the worst cells: max-min steps and flips at the tetrahedra within 5 "
                    "degrees of the worst, until the extreme angles stop improving (default: off)");

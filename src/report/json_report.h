@@ -75,6 +75,7 @@ inline void to_json(nlohmann::json& j, const Insertion_stats& s)
                      {"wedge_splits", s.wedge_splits},
                      {"cap_splits", s.cap_splits},
                      {"sliver_splits", s.sliver_splits},
+                     {"ear_splits", s.ear_splits},
                      {"undone", s.undone},
                      {"vertices_added", s.vertices_added},
                      {"seconds", s.seconds}};
@@ -164,6 +165,7 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"quality_guard", o.quality_guard},
                      {"topology_optimization", o.topology_optimization},
                      {"vertex_insertion", o.vertex_insertion},
+                     {"ear_splits", o.ear_splits},
                      {"max_vertex_insertions", o.max_vertex_insertions},
                      {"edge_contraction", o.edge_contraction},
                      {"worst_cell_phase", o.worst_cell_phase},

@@ -99,6 +99,10 @@ struct Insertion_options
   double quality_threshold = 0.34;
   Bad_tet_options shapes;      // short edges and margins; the angle bounds follow the threshold
   int smoothing_rounds = 2;    // local smoothing of the new vertices and the tetrahedron's own
+  /// Above 0 (degrees), the pass also splits boundary ears whose angle is above this,
+  /// before any shape test (`Smoothing_options::ear_splits` sets it in the main and the
+  /// largest-angle phases).
+  double ear_angle = 0;
 };
 
 /// With `max_iteration_number = 0` (no limit), the pipeline still stops after this
@@ -177,6 +181,15 @@ struct Smoothing_options
   double worst_cell_margin = 5;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
+  /// In the main and the largest-angle phases (with `vertex_insertion`), boundary ears are split:
+  /// a cell two of whose facets lie on the boundary of its subdomain, meeting at an
+  /// edge where its dihedral angle is above `largest_angle_threshold`. No other cell
+  /// of the subdomain shares that edge, so the angle is the surface's own there and
+  /// no move or flip of the cell lowers it; a vertex on the opposite edge, smoothed,
+  /// splits it in two (`Insertion_pass`, kept only where the cells around improve).
+  /// Off by default: it lowers the largest angle where ears bound it, but lowers the
+  /// smallest on some meshes and costs time (doc/manual.md, section 9, "Boundary ears").
+  bool ear_splits = false;
   Insertion_options insertion;
   /// At most this many vertices are inserted; a negative value means 5% of the
   /// input's vertices.

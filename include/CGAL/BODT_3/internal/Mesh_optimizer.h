@@ -85,7 +85,11 @@ inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
   phases[0].options.edge_contraction = false;
   Smoothing_options lower = opt;
   lower.quality_measure = Quality_measure::largest_dihedral_angle;
-  lower.vertex_insertion = false;
+  // Insertion there only at boundary ears, whose largest angle nothing else lowers.
+  lower.vertex_insertion = opt.vertex_insertion && opt.ear_splits;
+  lower.insertion.ear_angle = opt.largest_angle_threshold;
+  lower.insertion.quality_threshold = 0;   // no bad shapes there
+  if(opt.ear_splits) phases[0].options.insertion.ear_angle = opt.largest_angle_threshold;
   lower.edge_contraction = false;
   // Max-min steps where an angle is above the threshold; flips around those
   // cells, where an angle is also below its supplement (the flip pass selects by
@@ -355,13 +359,15 @@ private:
     touched_.clear();
     added_.clear();
     begin_pass(insertion_history_);
-    if(guard_knows_sines())
+    // Ears are found by their facets, not by a quality threshold.
+    const bool seeded = guard_knows_sines() && !(opt.insertion.ear_angle > 0);
+    if(seeded)
       collect_below(opt.insertion.quality_threshold, insertion_candidates_,
                     [this](std::size_t c) { return view_.cells()[c]; });
     stats.insertion = insertion_pass(adapter_, opt.insertion, bounds_, opt.quality_measure, opt.tensor_voting,
                                      insertion_budget_, opt.moving_vertices == Moving_vertices::ALL,
                                      [this](Vertex_handle v) { return motion_of(v); }, vertex_id(), added_, touched_,
-                                     &insertion_history_, guard_knows_sines() ? &insertion_candidates_ : nullptr,
+                                     &insertion_history_, seeded ? &insertion_candidates_ : nullptr,
                                      &volume_budget_, &distance_);
     stats.insertion.seconds = timer_.time() - start;
     insertion_budget_ -= stats.insertion.vertices_added;

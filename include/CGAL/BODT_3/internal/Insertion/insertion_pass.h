@@ -9,6 +9,7 @@
 #include <CGAL/BODT_3/internal/Insertion/Bad_tet_shape.h>
 #include <CGAL/BODT_3/internal/Insertion/Vertex_insertion.h>
 #include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
+#include <CGAL/BODT_3/internal/Quality/dihedral_angles.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
 #include <CGAL/BODT_3/internal/Smoothing/Local_smoothing.h>
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
@@ -25,6 +26,7 @@
 #include <initializer_list>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -106,6 +108,23 @@ public:
       if(budget < 1) break;
       if(!e.still_there(adapter_.tds())) continue;
       if(history && !history->worth_trying(e.ids)) continue;
+      if(const std::optional<std::array<int, 2>> inner = ear_inner_edge(e.cell))
+      {
+        keep_sine_ = true;
+        const bool kept = try_split(e.cell, [&] { return split_ear(e.cell, *inner); });
+        keep_sine_ = false;
+        if(kept)
+        {
+          keep(added, touched, stats);
+          ++stats.ear_splits;
+          budget -= records_.size();
+          if(history) ++history->clock;
+          continue;
+        }
+        ++stats.undone;
+        if(history) history->record_failure(e.ids);
+        continue;
+      }
       const Bad_tet shape = classify_bad_tet(point(e.cell->vertex(0)), point(e.cell->vertex(1)),
                                              point(e.cell->vertex(2)), point(e.cell->vertex(3)), shapes_);
       const std::size_t needed = shape.shape == Bad_tet_shape::sliver ? 2 : 1;
@@ -114,9 +133,10 @@ public:
         if(history) history->record_failure(e.ids);
         continue;
       }
-      if(try_split(e.cell, shape))
+      if(try_split(e.cell, [&] { return split_shape(e.cell, shape); }))
       {
-        keep(shape.shape, added, touched, stats);
+        keep(added, touched, stats);
+        count(shape.shape, stats);
         budget -= records_.size();
         if(history) ++history->clock;
         continue;
@@ -142,12 +162,47 @@ private:
     return tet_quality(measure_, point(c->vertex(0)), point(c->vertex(1)), point(c->vertex(2)), point(c->vertex(3)));
   }
 
-  // The mesh cells below the threshold (by their sine), worst first by the measure.
+  // A boundary ear: a mesh cell two of whose facets lie on the boundary of its
+  // subdomain (outside or another subdomain across), meeting at an edge where its
+  // dihedral angle is above `ear_angle`. No other cell of the subdomain shares that
+  // edge there, so the angle is the surface's, whatever the cell's vertices do
+  // within it; only a vertex on the opposite (inner) edge, moved inside, splits it.
+  // Returns the slots of the inner edge's vertices.
+  std::optional<std::array<int, 2>> ear_inner_edge(Cell_handle c) const
+  {
+    if(!(opt_.ear_angle > 0)) return std::nullopt;
+    const auto region = adapter_.region(c);
+    std::array<int, 4> off{};
+    int n = 0;
+    for(int i = 0; i < 4; ++i)
+      if(!(adapter_.region(c->neighbor(i)) == region))
+      {
+        if(n == 2) return std::nullopt;
+        off[n++] = i;
+      }
+    if(n != 2) return std::nullopt;
+    // The ear edge joins the other two slots; dihedral_angles lists the edges 01, 02, 03, 12, 13, 23.
+    int e[2], m = 0;
+    for(int k = 0; k < 4; ++k)
+      if(k != off[0] && k != off[1]) e[m++] = k;
+    static const int edge_index[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+    const auto angles = dihedral_angles(point(c->vertex(0)), point(c->vertex(1)), point(c->vertex(2)),
+                                        point(c->vertex(3)));
+    if(!(angles[static_cast<std::size_t>(edge_index[e[0]][e[1]])] > opt_.ear_angle)) return std::nullopt;
+    return std::array<int, 2>{off[0], off[1]};
+  }
+
+  // The mesh cells below the threshold (by their sine), or the ears, worst first by the measure.
   std::vector<Candidate> candidates(const std::vector<Cell_handle>* seeds) const
   {
     std::vector<Candidate> found;
     auto consider = [&](Cell_handle c) {
       if(adapter_.region(c).kind != Region_kind::mesh) return;
+      if(ear_inner_edge(c))
+      {
+        found.push_back(Candidate::of(c, quality(c), vertex_id_));
+        return;
+      }
       const double sine = min_dihedral_sine(point(c->vertex(0)), point(c->vertex(1)), point(c->vertex(2)),
                                             point(c->vertex(3)));
       if(sine < opt_.quality_threshold) found.push_back(Candidate::of(c, quality(c), vertex_id_));
@@ -160,26 +215,38 @@ private:
     return found;
   }
 
-  // Splits cell c by its shape, smooths, and keeps the result if it is better;
+  // Splits cell c (`split()`), smooths, and keeps the result if it is better;
   // otherwise undoes everything and says so.
-  bool try_split(Cell_handle c, const Bad_tet& shape)
+  template <class Split>
+  bool try_split(Cell_handle c, const Split& split)
   {
     records_.clear();
     const std::vector<Vertex_handle> own = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
     std::vector<double> before = cells_around(own);
-    bool done = false;
-    switch(shape.shape)
-    {
-    case Bad_tet_shape::wedge: done = split_wedge(c, shape); break;
-    case Bad_tet_shape::spade: done = split_spade(c, shape); break;
-    case Bad_tet_shape::sliver: done = split_sliver(c, shape); break;
-    default: done = split_cap(c, shape); break;
-    }
+    sine_before_ = worst_sine();
+    const bool done = split();
     moved_.clear();
     was_.clear();
     if(done && smooth_and_judge(own, before)) return true;
     undo();
     return false;
+  }
+
+  bool split_shape(Cell_handle c, const Bad_tet& shape)
+  {
+    switch(shape.shape)
+    {
+    case Bad_tet_shape::wedge: return split_wedge(c, shape);
+    case Bad_tet_shape::spade: return split_spade(c, shape);
+    case Bad_tet_shape::sliver: return split_sliver(c, shape);
+    default: return split_cap(c, shape);
+    }
+  }
+
+  // An ear: its inner edge at the middle; the smoothing then moves the new vertex inside.
+  bool split_ear(Cell_handle c, const std::array<int, 2>& inner)
+  {
+    return split_at_edge(c->vertex(inner[0]), c->vertex(inner[1]), on_edge(c, inner[0], inner[1], 0.5));
   }
 
   // A wedge: the edge opposite the short one, at the projection of the short edge's middle.
@@ -343,10 +410,19 @@ private:
     for(Cell_handle x : around_)
       if(!bounds_.contains(point(x->vertex(0)), point(x->vertex(1)), point(x->vertex(2)), point(x->vertex(3)), 0.0))
         return false;
+    if(keep_sine_ && worst_sine() < sine_before_) return false;
     return compare_worst_first(after, before) > 0;
   }
 
-  void keep(Bad_tet_shape shape, std::vector<Added_vertex<Vertex_handle>>& added, std::vector<Vertex_handle>& touched,
+  double worst_sine() const
+  {
+    double w = 2;
+    for(Cell_handle x : around_)
+      w = std::min(w, min_dihedral_sine(point(x->vertex(0)), point(x->vertex(1)), point(x->vertex(2)), point(x->vertex(3))));
+    return w;
+  }
+
+  void keep(std::vector<Added_vertex<Vertex_handle>>& added, std::vector<Vertex_handle>& touched,
             Insertion_stats& stats)
   {
     for(const auto& r : records_)
@@ -357,6 +433,10 @@ private:
     }
     for(Cell_handle x : around_)
       for(int k = 0; k < 4; ++k) touched.push_back(x->vertex(k));
+  }
+
+  static void count(Bad_tet_shape shape, Insertion_stats& stats)
+  {
     if(shape == Bad_tet_shape::spade) ++stats.spade_splits;
     if(shape == Bad_tet_shape::wedge) ++stats.wedge_splits;
     if(shape == Bad_tet_shape::cap) ++stats.cap_splits;
@@ -415,6 +495,8 @@ private:
   std::vector<Vertex_handle> moved_;
   std::vector<Point> was_;
   std::vector<Cell_handle> around_, scratch_;
+  bool keep_sine_ = false;
+  double sine_before_ = 0;
 };
 
 /// One insertion pass (`Insertion_pass`) on the triangulation behind `adapter`,
