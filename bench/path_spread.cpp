@@ -9,19 +9,16 @@
 // the bounding box's largest side per coordinate (std::mt19937_64 seeded with s).
 // Every binary smooths every copy under GNU time; Markdown tables on standard
 // output, progress on standard error, every run's figures with --json.
+#include "run_child.h"
+
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/Tet_mesh.h>
 #include <CGAL/Bbox_3.h>
 
 #include <nlohmann/json.hpp>
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -33,8 +30,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-extern char** environ;
 
 namespace fs = std::filesystem;
 namespace BODT = CGAL::BODT_3;
@@ -239,30 +234,6 @@ std::size_t write_copy(const std::string& input, const BODT::Tet_mesh& mesh, con
   return moved;
 }
 
-// Runs `args` as a child of GNU time, as bench/scale does; its user and sys seconds.
-std::array<double, 2> run_child(std::vector<std::string> args, const fs::path& times_file)
-{
-  std::string command = args[0];
-  for(std::size_t k = 1; k < args.size(); ++k) command += " " + args[k];
-  args.insert(args.begin(), {"/usr/bin/time", "-f", "%U %S", "-o", times_file.string()});
-  std::vector<char*> argv;
-  for(const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid;
-  if(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
-    throw std::runtime_error("cannot start " + args[0]);
-  int status = 0;
-  if(waitpid(pid, &status, 0) != pid) throw std::runtime_error("lost the child running " + command);
-  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(command + " failed (" +
-                             (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                                : "signal " + std::to_string(WTERMSIG(status))) + ")");
-  std::array<double, 2> t{};
-  if(!(std::ifstream(times_file) >> t[0] >> t[1]))
-    throw std::runtime_error("cannot read GNU time's " + times_file.string());
-  return t;
-}
-
 std::string fixed(double x)
 {
   char s[32];
@@ -311,13 +282,12 @@ void measure(std::size_t i, const Options& o, const Folder& folder, Report& rep)
       std::vector<std::string> args = {b.path, "smooth", copy.string(), "-o", folder.file(1).string(), "--threads",
                                        std::to_string(o.threads), "--report", folder.file(2).string(), "-q"};
       args.insert(args.end(), o.extra.begin(), o.extra.end());
-      const auto start = std::chrono::steady_clock::now();
-      const std::array<double, 2> t = run_child(args, folder.file(3));
+      const bodt_bench::Child_times t = bodt_bench::run_child(args, folder.file(3));
       Run r{i, b.label, seed};
-      r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      r.wall = t.wall;
       const json after = json::parse(std::ifstream(folder.file(2))).at("after");
-      r.min = after.at("min_dihedral_deg"), r.max = after.at("max_dihedral_deg"), r.user = t[0], r.sys = t[1];
-      for(int k = 1; k < 4; ++k) fs::remove(folder.file(k));
+      r.min = after.at("min_dihedral_deg"), r.max = after.at("max_dihedral_deg"), r.user = t.user, r.sys = t.sys;
+      for(int k = 1; k < 3; ++k) fs::remove(folder.file(k));
       std::fprintf(stderr, "  seed %d, bodt %s: %.2f / %.2f deg, %.2f s CPU\n", seed, b.label.c_str(), r.min, r.max,
                    r.cpu());
       rep.runs.push_back(r);

@@ -19,6 +19,7 @@
 // log-log plot of wall and smoothing time against tetrahedra.
 #include "compare/compare.h"
 #include "jittered_grid.h"
+#include "run_child.h"
 
 #include <CGAL/BODT_3/IO/mesh_io.h>
 #include <CGAL/BODT_3/Tet_mesh_conversion.h>
@@ -26,10 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <spawn.h>
 #include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -48,8 +46,6 @@
 #include <string>
 #include <variant>
 #include <vector>
-
-extern char** environ;
 
 namespace fs = std::filesystem;
 namespace BODT = CGAL::BODT_3;
@@ -319,39 +315,6 @@ bool same_file(const fs::path& a, const fs::path& b)
                     std::istreambuf_iterator<char>(fb), std::istreambuf_iterator<char>());
 }
 
-struct Child_times
-{
-  double wall = 0, user = 0, sys = 0, peak_mb = 0;
-};
-
-// Runs `args` as a child of GNU time, which reports its CPU time and peak
-// resident set: a child spawned from this process directly would count this
-// process's resident set (a generated mesh) while it shares its memory before exec.
-Child_times run_child(std::vector<std::string> args, const fs::path& folder)
-{
-  const fs::path times_file = folder / "scale_times.txt";
-  const std::string command = args[0] + " " + args[1] + " " + args[2];
-  args.insert(args.begin(), {"/usr/bin/time", "-f", "%U %S %M", "-o", times_file.string()});
-  std::vector<char*> argv;
-  for(const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  const auto start = std::chrono::steady_clock::now();
-  pid_t pid;
-  if(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
-    throw std::runtime_error("cannot start " + args[0]);
-  int status = 0;
-  if(waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(command + " failed");
-  Child_times t;
-  t.wall = seconds_since(start);
-  double kilobytes = 0;
-  std::ifstream in(times_file);
-  if(!(in >> t.user >> t.sys >> kilobytes)) throw std::runtime_error("cannot read GNU time's " + times_file.string());
-  t.peak_mb = kilobytes / 1024.0;
-  fs::remove(times_file);
-  return t;
-}
-
 Run read_report(const fs::path& report)
 {
   std::ifstream in(report);
@@ -398,11 +361,11 @@ std::vector<Run> measure(const Input_mesh& input, const Options& o)
     {
       const fs::path output = o.folder / run_file(input, b, threads);
       const double load_before = load_average();
-      const Child_times t =
-          run_child({b.path, "smooth", input.file.string(), "-o", output.string(), "--iterations",
+      const bodt_bench::Child_times t =
+          bodt_bench::run_child({b.path, "smooth", input.file.string(), "-o", output.string(), "--iterations",
                      std::to_string(input.iterations), "--threads", std::to_string(threads), "--report",
                      report.string(), "-q"},
-                    o.folder);
+                    o.folder / "scale_times.txt");
       Run r = read_report(report);
       fs::remove(report);
       r.input = input.name;
