@@ -4,7 +4,8 @@
 // determinism. Also the paper's random sphere as a Triangulation_3; and the flips
 // and the phases through the pipeline (surface, volume, curves and validity kept,
 // the same output for the same input and on any number of threads with every pass
-// at work, what the flip pass's parallel rounds rely on, the largest-angle phase).
+// at work, what the flip pass's parallel rounds rely on, the largest-angle phase),
+// and the flat view's re-reads after changes against a first read.
 #include "inputs/generated_inputs.h"
 #include "test_support.h"
 #include "../../bench/jittered_grid.h"
@@ -15,6 +16,7 @@
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/smooth.h>
 #include <CGAL/BODT_3/internal/Smoothing/sweep_order.h>
+#include <CGAL/BODT_3/internal/Insertion/Vertex_insertion.h>
 #include <CGAL/BODT_3/internal/Topology/flip_pass.h>
 #include <CGAL/bodt_optimize_mesh_3.h>
 #include <CGAL/AABB_traits.h>
@@ -99,6 +101,45 @@ struct Volume_refusals
   void after_classification(const BODT::Smoothing_result&) const {}
   void after_iteration(const BODT::Iteration_stats& s) const { *refused += s.refused_changing_volume; }
 };
+
+// A C3T3's corners, by position, and its number of vertices on feature curves.
+struct Feature_census
+{
+  std::set<Point> corners;
+  std::size_t curve_vertices = 0;
+};
+
+Feature_census feature_census(const C3t3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  auto cp = tr.geom_traits().construct_point_3_object();
+  Feature_census census;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+  {
+    if(c3t3.in_dimension(v) == 0) census.corners.insert(cp(v->point()));
+    census.curve_vertices += c3t3.in_dimension(v) == 1;
+  }
+  return census;
+}
+
+// The same points, cells and boundary triangles as the one-thread run's.
+void expect_same_mesh(const BODT::Tet_mesh& m, const BODT::Tet_mesh& reference, int threads)
+{
+  EXPECT_TRUE(m.points == reference.points) << threads << " threads";
+  EXPECT_TRUE(m.tets == reference.tets) << threads << " threads";
+  EXPECT_TRUE(m.triangles == reference.triangles) << threads << " threads";
+}
+
+// No inverted cell, every subdomain's volume to 1e-10, the extreme angles no worse.
+void expect_volumes_and_angles_kept(const BODT::Quality_report& before, const C3t3& c3t3)
+{
+  const auto after = BODT::mesh_quality(c3t3);
+  EXPECT_EQ(after.inverted_tets, 0u);
+  for(const auto& kv : before.volume_per_subdomain)
+    EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second) << "subdomain " << kv.first;
+  EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
+  EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg + kAngleSlack);
+}
 
 } // namespace
 
@@ -392,6 +433,28 @@ TEST(RandomSphere, SameOutputOnAnyNumberOfThreadsAndAValidColouring)
   EXPECT_NE(reference, finite_points(input));
 }
 
+namespace {
+
+// The view, re-read, holds what a first read of the same triangulation holds.
+template <class Adapter>
+void expect_first_read(Adapter& adapter, const BODT::internal::Flat_view<Adapter>& view)
+{
+  Adapter again(adapter);
+  const BODT::internal::Flat_view<Adapter> first(again);
+  ASSERT_EQ(view.cells(), first.cells());
+  const auto& m = view.mesh();
+  const auto& f = first.mesh();
+  for(std::size_t k = 0; k < m.cells.size(); ++k)
+    for(int i = 0; i < 4; ++i)
+      ASSERT_EQ(view.vertices()[m.cells[k][i]], first.vertices()[f.cells[k][i]]) << "cell " << k;
+  EXPECT_EQ(m.neighbor, f.neighbor);
+  EXPECT_EQ(m.in_mesh, f.in_mesh);
+  EXPECT_EQ(m.subdomain, f.subdomain);
+  EXPECT_EQ(m.hull_checks.size(), f.hull_checks.size());
+}
+
+} // namespace
+
 // The re-read after a pass keeps what it can of the last read (Flat_view::read_cells):
 // after an insertion that replaces cells and flips that change cells in place
 // (CGAL's own 2-3 flips reuse cells), it must give what a first read gives.
@@ -413,17 +476,91 @@ TEST(RandomSphere, ReReadAfterChangesIsAFirstRead)
   ASSERT_GT(flips, 0);
   ASSERT_TRUE(tr.tds().is_valid());   // no longer Delaunay
   view.refresh();
-  Adapter again(tr);
-  const BODT::internal::Flat_view<Adapter> first(again);
-  ASSERT_EQ(view.cells(), first.cells());
-  const auto& m = view.mesh();
-  const auto& f = first.mesh();
-  for(std::size_t k = 0; k < m.cells.size(); ++k)
-    for(int i = 0; i < 4; ++i)
-      EXPECT_EQ(view.vertices()[m.cells[k][i]], first.vertices()[f.cells[k][i]]) << "cell " << k;
-  EXPECT_EQ(m.neighbor, f.neighbor);
-  EXPECT_EQ(m.in_mesh, f.in_mesh);
-  EXPECT_EQ(m.subdomain, f.subdomain);
+  expect_first_read(adapter, view);
+}
+
+namespace {
+
+// Flip passes (of the cells whose smallest sine is below `threshold`), then
+// `splits` edges split (every third split undone), then flips again, each
+// followed by a re-read; returns the flips, the splits kept and the re-reads that
+// took only the new cells from the triangulation.
+template <class Adapter>
+std::array<std::size_t, 3> change_and_reread(Adapter& adapter, BODT::internal::Flat_view<Adapter>& view,
+                                             bool flip_outside, double threshold, std::size_t splits)
+{
+  namespace I = BODT::internal;
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  using Cell_handle = typename Adapter::Cell_handle;
+  auto& tr = adapter.triangulation();
+  auto vertex_id = [&view](Vertex_handle v) { return view.index(v); };
+  BODT::Flip_options flips;
+  flips.quality_threshold = threshold;
+  flips.flip_outside = flip_outside;
+  std::array<std::size_t, 3> done{0, 0, 0};
+  auto reread = [&] {
+    view.refresh();
+    done[2] += view.cells_read() > 0 && view.cells_read() < view.cells().size();
+    expect_first_read(adapter, view);
+  };
+  auto flip_and_reread = [&] {
+    std::vector<Vertex_handle> touched;
+    done[0] += I::flip_pass(adapter, flips, I::Dihedral_bounds(), vertex_id, touched).total();
+    reread();
+  };
+  for(int pass = 0; pass < 3; ++pass) flip_and_reread();
+  std::vector<std::pair<Vertex_handle, Vertex_handle>> edges;
+  std::size_t n = 0;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end() && edges.size() < splits; ++c)
+    if(n++ % 7 == 0) edges.push_back({c->vertex(0), c->vertex(1)});
+  auto cp = tr.geom_traits().construct_point_3_object();
+  std::size_t tried = 0;
+  for(const auto& [u, v] : edges)
+  {
+    Cell_handle c;
+    int i, j;
+    if(!tr.tds().is_edge(u, v, c, i, j)) continue;
+    I::Split_record<Adapter> record;
+    if(!I::split_edge(adapter, c, i, j, CGAL::midpoint(cp(u->point()), cp(v->point())), record)) continue;
+    if(++tried % 3 == 0)
+      I::undo_split(adapter, record);
+    else
+      ++done[1];
+  }
+  reread();
+  for(int pass = 0; pass < 2; ++pass) flip_and_reread();
+  return done;
+}
+
+} // namespace
+
+// Flat_view::refresh when it follows the changes (re-reading only the cells
+// replace_cells logged): after flip passes, edge splits kept and undone, on
+// CGAL-meshed inputs with features and two subdomains (with flips outside the
+// complex, by its convex hull) and on the paper's random sphere, every re-read
+// gives what a first read gives.
+TEST(FlatView, ReReadOfTheLoggedChangesIsAFirstRead)
+{
+  for(Shape shape : {Shape::two_subdomains, Shape::genus2})
+  {
+    SCOPED_TRACE(name(shape));
+    C3t3 c3t3 = make_input(shape, Size::small).c3t3;
+    BODT::internal::C3t3_adapter<C3t3> adapter(c3t3);
+    BODT::internal::Flat_view<BODT::internal::C3t3_adapter<C3t3>> view(adapter);
+    view.follow_changes();
+    const auto done = change_and_reread(adapter, view, true, 0.3, 12);
+    EXPECT_GT(done[0], 10u) << "flips";
+    EXPECT_GT(done[1], 3u) << "splits";
+    EXPECT_GE(done[2], 2u) << "re-reads of the new cells alone";
+  }
+  Delaunay tr = make_random_sphere();
+  BODT::internal::Triangulation_3_adapter<Delaunay> adapter(tr);
+  BODT::internal::Flat_view<BODT::internal::Triangulation_3_adapter<Delaunay>> view(adapter);
+  view.follow_changes();
+  const auto done = change_and_reread(adapter, view, false, 0.05, 4);
+  EXPECT_GT(done[0], 10u) << "flips";
+  EXPECT_GT(done[1], 0u) << "splits";
+  EXPECT_GE(done[2], 2u) << "re-reads of the new cells alone";
 }
 
 TEST(Visitor, ReportsEveryIteration)
@@ -869,9 +1006,7 @@ TEST(Pipeline, SameCellsOnAnyNumberOfThreadsWithEveryPassAtWork)
         counts = now;
         continue;
       }
-      EXPECT_TRUE(m.points == reference.points) << threads << " threads";
-      EXPECT_TRUE(m.tets == reference.tets) << threads << " threads";
-      EXPECT_TRUE(m.triangles == reference.triangles) << threads << " threads";
+      expect_same_mesh(m, reference, threads);
     }
     EXPECT_GT(counts.flips, 0u);
     EXPECT_GT(counts.max_min, 0u);
@@ -901,14 +1036,7 @@ TEST(Pipeline, EdgeContractionKeepsVolumesFeaturesCornersOnAnyNumberOfThreads)
     const Generated_mesh input = make_input(shape, Size::small);
     const auto before = BODT::mesh_quality(input.c3t3);
     const auto& tr0 = input.c3t3.triangulation();
-    auto cp = tr0.geom_traits().construct_point_3_object();
-    std::set<Point> corners;
-    std::size_t features = 0;
-    for(auto v = tr0.finite_vertices_begin(); v != tr0.finite_vertices_end(); ++v)
-    {
-      if(input.c3t3.in_dimension(v) == 0) corners.insert(cp(v->point()));
-      features += input.c3t3.in_dimension(v) == 1;
-    }
+    const Feature_census features = feature_census(input.c3t3);
     BODT::Tet_mesh reference;
     for(int threads : {1, 2, 4})
     {
@@ -921,9 +1049,7 @@ TEST(Pipeline, EdgeContractionKeepsVolumesFeaturesCornersOnAnyNumberOfThreads)
       const BODT::Tet_mesh m = BODT::c3t3_to_tet_mesh(c3t3);
       if(threads > 1)
       {
-        EXPECT_TRUE(m.points == reference.points) << threads << " threads";
-        EXPECT_TRUE(m.tets == reference.tets) << threads << " threads";
-        EXPECT_TRUE(m.triangles == reference.triangles) << threads << " threads";
+        expect_same_mesh(m, reference, threads);
         continue;
       }
       reference = m;
@@ -932,24 +1058,10 @@ TEST(Pipeline, EdgeContractionKeepsVolumesFeaturesCornersOnAnyNumberOfThreads)
       expect_valid(tr);
       EXPECT_EQ(tr.number_of_vertices() + removed, tr0.number_of_vertices());
       EXPECT_LE(removed, tr0.number_of_vertices() / 20);
-      const auto after = BODT::mesh_quality(c3t3);
-      EXPECT_EQ(after.inverted_tets, 0u);
-      for(const auto& kv : before.volume_per_subdomain)
-        EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second) << "subdomain " << kv.first;
-      EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
-      EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg + kAngleSlack);
-      std::size_t corners_after = 0, features_after = 0;
-      for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-      {
-        if(c3t3.in_dimension(v) == 0)
-        {
-          EXPECT_TRUE(corners.count(cp(v->point()))) << "a corner moved";
-          ++corners_after;
-        }
-        features_after += c3t3.in_dimension(v) == 1;
-      }
-      EXPECT_EQ(corners_after, corners.size());
-      EXPECT_EQ(features_after, features);
+      expect_volumes_and_angles_kept(before, c3t3);
+      const Feature_census now = feature_census(c3t3);
+      EXPECT_TRUE(now.corners == features.corners) << "a corner moved, went or came";
+      EXPECT_EQ(now.curve_vertices, features.curve_vertices);
     }
   }
   EXPECT_GT(total, 0u) << "no contraction: the checks would not reach it";
@@ -1001,14 +1113,7 @@ TEST(Pipeline, EarSplitsRemoveEarsAndKeepVolumesFeaturesCornersOnAnyNumberOfThre
     const Generated_mesh input = make_input(shape, Size::small);
     const auto before = BODT::mesh_quality(input.c3t3);
     const auto& tr0 = input.c3t3.triangulation();
-    auto cp = tr0.geom_traits().construct_point_3_object();
-    std::set<Point> corners;
-    std::size_t features = 0;
-    for(auto v = tr0.finite_vertices_begin(); v != tr0.finite_vertices_end(); ++v)
-    {
-      if(input.c3t3.in_dimension(v) == 0) corners.insert(cp(v->point()));
-      features += input.c3t3.in_dimension(v) == 1;
-    }
+    const Feature_census features = feature_census(input.c3t3);
     C3t3 plain = input.c3t3;
     CGAL::bodt_optimize_mesh_3(plain);
     ears_without += ears_above(plain, 120.0);
@@ -1023,9 +1128,7 @@ TEST(Pipeline, EarSplitsRemoveEarsAndKeepVolumesFeaturesCornersOnAnyNumberOfThre
       const BODT::Tet_mesh m = BODT::c3t3_to_tet_mesh(c3t3);
       if(threads > 1)
       {
-        EXPECT_TRUE(m.points == reference.points) << threads << " threads";
-        EXPECT_TRUE(m.tets == reference.tets) << threads << " threads";
-        EXPECT_TRUE(m.triangles == reference.triangles) << threads << " threads";
+        expect_same_mesh(m, reference, threads);
         continue;
       }
       reference = m;
@@ -1034,24 +1137,10 @@ TEST(Pipeline, EarSplitsRemoveEarsAndKeepVolumesFeaturesCornersOnAnyNumberOfThre
       const auto& tr = c3t3.triangulation();
       expect_valid(tr);
       EXPECT_LE(tr.number_of_vertices(), tr0.number_of_vertices() + tr0.number_of_vertices() / 20 + 1);
-      const auto after = BODT::mesh_quality(c3t3);
-      EXPECT_EQ(after.inverted_tets, 0u);
-      for(const auto& kv : before.volume_per_subdomain)
-        EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second) << "subdomain " << kv.first;
-      EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg - kAngleSlack);
-      EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg + kAngleSlack);
-      std::size_t corners_after = 0, features_after = 0;
-      for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-      {
-        if(c3t3.in_dimension(v) == 0)
-        {
-          EXPECT_TRUE(corners.count(cp(v->point()))) << "a corner moved";
-          ++corners_after;
-        }
-        features_after += c3t3.in_dimension(v) == 1;
-      }
-      EXPECT_EQ(corners_after, corners.size());
-      EXPECT_GE(features_after, features);
+      expect_volumes_and_angles_kept(before, c3t3);
+      const Feature_census now = feature_census(c3t3);
+      EXPECT_TRUE(now.corners == features.corners) << "a corner moved, went or came";
+      EXPECT_GE(now.curve_vertices, features.curve_vertices);
     }
   }
   EXPECT_GT(total, 0u) << "no ear split: the checks would not reach it";

@@ -3,13 +3,14 @@
 //
 // The utilities the stages share (internal/Utilities/): the flat view's handle
 // index, the flip pass's tuple map, the parallel grouping, arrays first touched
-// on all threads, face matching, and the flip and insertion passes' history of
-// failed attempts.
+// on all threads, face matching, the flip and insertion passes' history of
+// failed attempts, and the in-place index shift of the flat view's re-reads.
 #include "delaunay_cells.h"
 
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
 #include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
+#include <CGAL/BODT_3/internal/Utilities/Index_shift.h>
 #include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Utilities/first_touch.h>
 #include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
@@ -251,4 +252,55 @@ TEST(AttemptHistory, FailureFieldsRoundTripAndSaturate)
   EXPECT_FALSE(h.worth_trying(cell));   // nothing changed since
   h.region_stamp[1] = (std::size_t(1) << 40);   // after the saturated clock, not after the real one
   EXPECT_TRUE(h.worth_trying(cell));
+}
+
+// The index shift of a re-read (elements gone, new ones in before given old
+// indices), on random changes of arrays of 1 to 5,000 elements: `relocate` gives
+// what building the array anew in its order gives, `now` the index there of
+// every kept element, `is_gone` exactly the gone ones; one and four entries
+// per element, growing and shrinking.
+TEST(IndexShift, RelocatesInPlaceAsARebuildWould)
+{
+  CGAL::Random random(7);
+  for(int round = 0; round < 200; ++round)
+  {
+    const std::size_t n = 1 + static_cast<std::size_t>(random.get_int(0, round % 4 == 0 ? 5000 : 300));
+    BODT::internal::Index_shift shift;
+    for(std::size_t j = 0; j < n; ++j)
+      if(random.get_double() < 0.02 * (round % 5)) shift.gone.push_back(static_cast<int>(j));
+    std::vector<std::size_t> before;
+    const int added = random.get_int(0, round % 3 == 0 ? 200 : 20);
+    for(int f = 0; f < added; ++f) before.push_back(static_cast<std::size_t>(random.get_int(0, static_cast<int>(n) + 1)));
+    std::sort(before.begin(), before.end());
+    shift.prepare(before, n);
+
+    // The array rebuilt: the kept elements and the new ones (-1 - f) in order.
+    std::vector<int> expected;
+    std::size_t f = 0;
+    for(std::size_t j = 0; j <= n; ++j)
+    {
+      for(; f < before.size() && before[f] == j; ++f) expected.push_back(-1 - static_cast<int>(f));
+      if(j < n && !std::binary_search(shift.gone.begin(), shift.gone.end(), static_cast<int>(j)))
+        expected.push_back(static_cast<int>(j));
+    }
+    std::vector<std::size_t> kept_before;
+    for(std::size_t b : before) kept_before.push_back(b - shift.gone_before(b));
+    for(std::size_t width : {std::size_t(1), std::size_t(4)})
+    {
+      std::vector<int> a(width * n);
+      for(std::size_t j = 0; j < width * n; ++j) a[j] = static_cast<int>(j / width);
+      shift.relocate(a, width, kept_before, expected.size());
+      ASSERT_EQ(a.size(), width * expected.size());
+      for(std::size_t k = 0; k < expected.size(); ++k)
+        for(std::size_t w = 0; w < width; ++w)
+          if(expected[k] >= 0) ASSERT_EQ(a[width * k + w], expected[k]) << "round " << round << ", element " << k;
+    }
+    for(std::size_t k = 0; k < expected.size(); ++k)
+      if(expected[k] >= 0)
+      {
+        ASSERT_FALSE(shift.is_gone(expected[k])) << "round " << round;
+        ASSERT_EQ(shift.now(expected[k]), static_cast<int>(k)) << "round " << round;
+      }
+    for(int g : shift.gone) ASSERT_TRUE(shift.is_gone(g)) << "round " << round;
+  }
 }

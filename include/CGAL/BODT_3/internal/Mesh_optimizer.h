@@ -151,6 +151,7 @@ public:
     : adapter_(adapter), options_(options), phase_options_(options), visitor_(visitor), timer_(started_timer()),
       view_(adapter, options.threads), mesh_(view_.mesh()), workers_(options.threads)
   {
+    view_.follow_changes();   // every pass changes the cells through replace_cells
     classification_ = classify(view_, classification_options(options));
     if(options.moving_vertices == Moving_vertices::NONE)
       std::fill(classification_.kind.begin(), classification_.kind.end(), Vertex_kind::fixed);

@@ -4,6 +4,7 @@
 #define CGAL_BODT_3_INTERNAL_MESH_FLAT_VIEW_H
 
 #include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
+#include <CGAL/BODT_3/internal/Utilities/Index_shift.h>
 #include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
 #include <CGAL/BODT_3/internal/Utilities/bare_point.h>
 #include <CGAL/BODT_3/internal/Mesh/Flat_mesh.h>
@@ -15,10 +16,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -57,6 +61,9 @@ public:
   const Mesh& mesh() const { return mesh_; }
   const Adapter& adapter() const { return adapter_; }
   const std::vector<Cell_handle>& cells() const { return cells_; }
+  /// How many cells the last read took from the triangulation: all of them, or
+  /// the new ones when it followed the changes.
+  std::size_t cells_read() const { return cells_read_; }
   const std::vector<Vertex_handle>& vertices() const { return handles_; }
   int index(Vertex_handle v) const
   {
@@ -65,31 +72,36 @@ public:
     return i;
   }
 
+  /// From now on, `refresh()` re-reads only the cells that the adapter's change
+  /// log (Cell_change_log) names and the adjacency around them: every change of
+  /// the cells must then go through `replace_cells`. Call it right after a read.
+  void follow_changes()
+  {
+    adapter_.start_logging();
+    follows_changes_ = true;
+  }
+
   /// Re-reads the cells (and any new vertex) of the triangulation, with their
-  /// regions, the hull checks and the incidences.
+  /// regions, the hull checks and the incidences; the arrays are those a first
+  /// read gives.
   void refresh()
   {
-    Tr& tr = adapter_.triangulation();
-    auto cp = tr.geom_traits().construct_point_3_object();
-    // Made at their size: by push_back, a few inserted vertices would double them.
-    const std::size_t known = static_cast<std::size_t>(
-        std::count_if(handles_.begin(), handles_.end(), [](Vertex_handle v) { return v != Vertex_handle(); }));
-    const std::size_t size = handles_.size() + (tr.number_of_vertices() - known);
-    handles_.reserve(size);
-    mesh_.points.reserve(size);
-    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    read_vertices();
+    std::vector<Cell_handle> changed;
+    adapter_.take_changes(changed);
+    // Looking a logged cell up walks the container's blocks (a few hundred), and
+    // many changes leave few neighbour indices unshifted: past a sixteenth of the
+    // cells (a choice, not tuned), the whole read.
+    if(follows_changes_ && slots_known_ && changed.size() <= cells_.size() / 16)
+      read_changed_cells(changed);   // in place: the incidences keep their pages
+    else
     {
-      // A new vertex may live where a removed one did: it gets a new index.
-      const int known = index_.find(v);
-      if(known >= 0 && handles_[known] != Vertex_handle()) continue;
-      index_.assign(v, static_cast<int>(handles_.size()));
-      handles_.push_back(v);
-      mesh_.points.push_back(cp(v->point()));
+      // The incidences are derived again below: freed first, so that they are not
+      // held with the old and the new cell arrays of the whole read at once.
+      mesh_.release_incidences();
+      read_cells();
+      cells_read_ = cells_.size();
     }
-    // The incidences are derived again below: freed first, so that they are not
-    // held with the old and the new cell arrays of read_cells at once.
-    mesh_.release_incidences();
-    read_cells();
     mesh_.hull_checks.clear();
     if(adapter_.convex_hull()) add_hull_checks();
     mesh_.build_incidences();
@@ -115,6 +127,28 @@ public:
   }
 
 private:
+  // Any vertex not in the view yet, appended.
+  void read_vertices()
+  {
+    Tr& tr = adapter_.triangulation();
+    auto cp = tr.geom_traits().construct_point_3_object();
+    // Made at their size: by push_back, a few inserted vertices would double them.
+    const std::size_t known = static_cast<std::size_t>(
+        std::count_if(handles_.begin(), handles_.end(), [](Vertex_handle v) { return v != Vertex_handle(); }));
+    const std::size_t size = handles_.size() + (tr.number_of_vertices() - known);
+    handles_.reserve(size);
+    mesh_.points.reserve(size);
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    {
+      // A new vertex may live where a removed one did: it gets a new index.
+      const int known = index_.find(v);
+      if(known >= 0 && handles_[known] != Vertex_handle()) continue;
+      index_.assign(v, static_cast<int>(handles_.size()));
+      handles_.push_back(v);
+      mesh_.points.push_back(cp(v->point()));
+    }
+  }
+
   // For each hull facet and each of its three neighbours on the hull, the far
   // vertex of the neighbour must stay on the inner side of the facet's plane;
   // checks that do not hold now (a hull that is not convex there) are left out.
@@ -160,8 +194,11 @@ private:
     std::vector<Cell_handle> before;
     before.swap(cells_);
     const int threads = workers_.threads();
-    reserve_fresh(cells_, tr.number_of_finite_cells(), threads);   // push_back alone would hold up to twice their number
+    // Room for a few more, which the next re-reads add in place (read_changed_cells);
+    // push_back alone would hold up to twice their number.
+    reserve_fresh(cells_, with_room(tr.number_of_finite_cells()), threads);
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
+    read_slots();
     const std::size_t nc = cells_.size();
     std::vector<std::array<int, 4>> cells_before;
     cells_before.swap(mesh_.cells);
@@ -170,10 +207,14 @@ private:
     std::vector<int> now = same_slots(before);   // per cell before: its index now, or -1
     std::vector<Cell_handle>().swap(before);
 
-    resize_for_overwrite(mesh_.cells, nc, threads);
-    resize_for_overwrite(mesh_.in_mesh, nc, threads);
-    resize_for_overwrite(mesh_.subdomain, nc, threads);
-    assign_fresh(mesh_.neighbor, 4 * nc, unknown_neighbor, threads);
+    reserve_fresh(mesh_.cells, with_room(nc), threads);
+    mesh_.cells.resize(nc);
+    reserve_fresh(mesh_.in_mesh, with_room(nc), threads);
+    mesh_.in_mesh.resize(nc);
+    reserve_fresh(mesh_.subdomain, with_room(nc), threads);
+    mesh_.subdomain.resize(nc);
+    reserve_fresh(mesh_.neighbor, 4 * with_room(nc), threads);
+    mesh_.neighbor.assign(4 * nc, unknown_neighbor);
     // A slot that holds a new cell, or a cell changed in place, has other vertices: it is new.
     std::vector<char> is_new;
     assign_fresh(is_new, nc, char(1), threads);
@@ -241,7 +282,156 @@ private:
     }, 256);
   }
 
+  // The container slot of every cell read, for `read_changed_cells`. The slots
+  // follow the cells' order; consecutive cells in consecutive slots of a block
+  // need no lookup, others a walk over the blocks (`Compact_container::index`).
+  void read_slots()
+  {
+    const auto& container = adapter_.triangulation().tds().cells();
+    slots_known_ = container.capacity() < std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t>().swap(slots_);
+    if(!slots_known_) return;
+    reserve_fresh(slots_, with_room(cells_.size()), workers_.threads());
+    slots_.resize(cells_.size());
+    using Cell = typename Tr::Triangulation_data_structure::Cell;
+    const Cell* last = nullptr;
+    for(std::size_t k = 0; k < cells_.size(); ++k)
+    {
+      const Cell* c = &*cells_[k];
+      slots_[k] = last && c == last + 1 ? slots_[k - 1] + 1 : static_cast<std::uint32_t>(container.index(cells_[k]));
+      last = c;
+    }
+  }
+
+  // The read after changes that went through `replace_cells`, whose cells the
+  // adapter logged (`changed`: removed or created, by slot; a slot may be named
+  // twice, or hold nothing now). The cells in other slots are those of the last
+  // read, with the same vertices, regions and neighbours but across a changed
+  // facet; the new ones go where their slots put them in the container's order,
+  // so that the arrays are those of a whole read. The arrays are changed in
+  // place: on a virtual machine, fresh pages for new arrays cost more than the
+  // whole read of a few changes.
+  void read_changed_cells(const std::vector<Cell_handle>& changed)
+  {
+    Tr& tr = adapter_.triangulation();
+    const auto& container = tr.tds().cells();
+    std::vector<std::pair<std::uint32_t, Cell_handle>> slots;
+    slots.reserve(changed.size());
+    for(const Cell_handle& c : changed) slots.push_back({static_cast<std::uint32_t>(container.index(c)), c});
+    std::sort(slots.begin(), slots.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    slots.erase(std::unique(slots.begin(), slots.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
+                slots.end());
+    // The cells of the last read in a changed slot are gone; the finite cells now
+    // in one are new. A new cell goes before the first cell of the last read with
+    // a larger slot (`before`, an old index).
+    Index_shift shift;
+    std::vector<std::pair<std::uint32_t, Cell_handle>> fresh;
+    std::vector<std::size_t> before;
+    for(const auto& [slot, c] : slots)
+    {
+      const std::size_t at = static_cast<std::size_t>(std::lower_bound(slots_.begin(), slots_.end(), slot) - slots_.begin());
+      if(at < slots_.size() && slots_[at] == slot) shift.gone.push_back(static_cast<int>(at));
+      if(container.is_used(c) && !tr.is_infinite(c))
+      {
+        fresh.push_back({slot, c});
+        before.push_back(at);
+      }
+    }
+    const std::size_t n_before = cells_.size();
+    shift.prepare(before, n_before);
+
+    // The kept cells next to a gone one, found through the gone cells' neighbours
+    // before these are overwritten: a new cell's neighbour that is not new is one
+    // of them, or infinite, or (after a change of the hull) a cell that was next
+    // to an infinite cell that went.
+    Handle_index_map<Cell_handle> border;
+    border.reset(4 * shift.gone.size());
+    std::vector<int> border_cells;
+    for(int j : shift.gone)
+      for(int i = 0; i < 4; ++i)
+      {
+        const int o = mesh_.neighbor[4 * static_cast<std::size_t>(j) + i];
+        if(o < 0 || shift.is_gone(o)) continue;
+        const int k = shift.now(o);
+        if(border.insert(cells_[static_cast<std::size_t>(o)], k)) border_cells.push_back(k);
+      }
+
+    // Where the new cells go: after the kept cells before them, and the new ones before.
+    std::vector<std::size_t> kept_before(fresh.size());
+    for(std::size_t f = 0; f < fresh.size(); ++f)
+      kept_before[f] = before[f] - shift.gone_before(before[f]);
+    const std::size_t nc = n_before - shift.gone.size() + fresh.size();
+    shift.relocate(cells_, 1, kept_before, nc);
+    shift.relocate(slots_, 1, kept_before, nc);
+    shift.relocate(mesh_.cells, 1, kept_before, nc);
+    shift.relocate(mesh_.in_mesh, 1, kept_before, nc);
+    shift.relocate(mesh_.subdomain, 1, kept_before, nc);
+    shift.relocate(mesh_.neighbor, 4, kept_before, nc);
+    std::vector<int> fresh_at(fresh.size());
+    for(std::size_t f = 0; f < fresh.size(); ++f)
+    {
+      fresh_at[f] = static_cast<int>(kept_before[f] + f);
+      cells_[static_cast<std::size_t>(fresh_at[f])] = fresh[f].second;
+      slots_[static_cast<std::size_t>(fresh_at[f])] = fresh[f].first;
+    }
+    // The kept cells' neighbours, as indices of now; one gone is learnt below.
+    workers_.for_each(0, static_cast<int>(nc), [&](char&, int k) {
+      for(int i = 0; i < 4; ++i)
+      {
+        int& entry = mesh_.neighbor[4 * static_cast<std::size_t>(k) + i];
+        if(entry >= 0) entry = shift.is_gone(entry) ? unknown_neighbor : shift.now(entry);
+      }
+    }, 4096);
+
+    cells_read_ = fresh.size();
+    Handle_index_map<Cell_handle> fresh_index;
+    fresh_index.reset(fresh.size());
+    for(std::size_t f = 0; f < fresh.size(); ++f) fresh_index.insert(fresh[f].second, fresh_at[f]);
+    // The new cells, on one thread (they are few): their vertices, regions and
+    // neighbours, and theirs as neighbours of the kept cells.
+    for(std::size_t f = 0; f < fresh.size(); ++f)
+    {
+      const int k = fresh_at[f];
+      const Cell_handle c = fresh[f].second;
+      mesh_.cells[k] = {index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))};
+      read_region(k, c);
+      for(int i = 0; i < 4; ++i)
+      {
+        const Cell_handle n = c->neighbor(i);
+        int m = fresh_index.find(n);
+        if(m < 0 && !tr.is_infinite(n))
+        {
+          m = border.find(n);
+          if(m < 0) m = slot_index(n);
+          mesh_.neighbor[4 * static_cast<std::size_t>(m) + n->index(c)] = k;
+        }
+        mesh_.neighbor[4 * static_cast<std::size_t>(k) + i] = m;
+      }
+    }
+    // A kept cell whose neighbour went with no new finite cell there is on the hull now.
+    for(int k : border_cells)
+      for(int i = 0; i < 4; ++i)
+      {
+        int& entry = mesh_.neighbor[4 * static_cast<std::size_t>(k) + i];
+        if(entry == unknown_neighbor) entry = checked_infinite(cells_[static_cast<std::size_t>(k)]->neighbor(i));
+      }
+  }
+
+  // The index of a cell of the view, by its slot.
+  int slot_index(Cell_handle c) const
+  {
+    const auto slot = static_cast<std::uint32_t>(adapter_.triangulation().tds().cells().index(c));
+    const auto at = std::lower_bound(slots_.begin(), slots_.end(), slot);
+    if(at == slots_.end() || *at != slot || cells_[static_cast<std::size_t>(at - slots_.begin())] != c)
+      throw std::logic_error("Flat_view: a neighbour not in the view");
+    return static_cast<int>(at - slots_.begin());
+  }
+
   static constexpr int unknown_neighbor = -2;
+
+  // A size with room for the cells a few passes add (flips add one cell at a
+  // time, insertion a few): in-place re-reads then keep the arrays' pages.
+  static std::size_t with_room(std::size_t n) { return n + n / 64 + 64; }
 
   void read_region(int k, Cell_handle c)
   {
@@ -282,6 +472,10 @@ private:
   Mesh mesh_;
   std::vector<Vertex_handle> handles_;
   std::vector<Cell_handle> cells_;
+  std::vector<std::uint32_t> slots_;   // per cell, its slot in the container (read_slots)
+  bool slots_known_ = false;
+  bool follows_changes_ = false;
+  std::size_t cells_read_ = 0;
   Handle_index_map<Vertex_handle> index_;
 };
 

@@ -3,6 +3,8 @@
 #ifndef CGAL_BODT_3_INTERNAL_MESH_TRIANGULATION_ADAPTER_H
 #define CGAL_BODT_3_INTERNAL_MESH_TRIANGULATION_ADAPTER_H
 
+#include <CGAL/BODT_3/internal/Mesh/Cell_change_log.h>
+
 #include <CGAL/number_utils.h>
 #include <CGAL/Kernel/global_functions.h>
 
@@ -56,7 +58,7 @@ struct Patch
 /// patches, and curve edges (which no change may remove). Every change goes
 /// through the complex's own add/remove functions, so its counters stay right.
 template <class C3T3>
-class C3t3_adapter
+class C3t3_adapter : public Cell_change_log<typename C3T3::Triangulation::Cell_handle>
 {
 public:
   using Triangulation = typename C3T3::Triangulation;
@@ -183,7 +185,7 @@ private:
 /// The same for a `Triangulation_3`: its finite cells are the mesh (one
 /// subdomain), its convex hull the boundary; there are no patches or curves.
 template <class Tr>
-class Triangulation_3_adapter
+class Triangulation_3_adapter : public Cell_change_log<typename Tr::Cell_handle>
 {
 public:
   using Triangulation = Tr;

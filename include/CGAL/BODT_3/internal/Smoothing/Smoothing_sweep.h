@@ -220,8 +220,11 @@ public:
       dependent_begin_[u + 1] = count;
     }, 1024);
     for(int u = 0; u < nv; ++u) dependent_begin_[u + 1] += dependent_begin_[u];
-    std::vector<int>().swap(dependents_);
-    resize_for_overwrite(dependents_, static_cast<std::size_t>(dependent_begin_[nv]), workers_.threads());
+    // With room for a few more: after a pass that changed a few cells, the array
+    // keeps its pages (fresh ones cost more than deriving it, on a virtual machine).
+    const std::size_t total = static_cast<std::size_t>(dependent_begin_[nv]);
+    reserve_fresh(dependents_, total + total / 64 + 64, workers_.threads());
+    dependents_.resize(total);
     Thread_workers<std::vector<int>>(workers_.threads()).for_each(0, nv, [&](std::vector<int>& stamp, int u) {
       int next = dependent_begin_[u];
       for_dependents(stamp, u, [&](int w) { dependents_[next++] = w; });

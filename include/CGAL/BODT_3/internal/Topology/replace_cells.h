@@ -210,7 +210,11 @@ bool replace_cells(Adapter& adapter, const std::vector<typename Adapter::Cell_ha
     }
   for(std::size_t k = 0; k < nn; ++k)
     for(int i = 0; i < 4; ++i) cells[k]->vertex(i)->set_cell(cells[k]);
-  for(Cell_handle c : old_cells) tds.delete_cell(c);
+  for(Cell_handle c : old_cells)
+  {
+    adapter.changed(c);
+    tds.delete_cell(c);
+  }
   for(Vertex_handle v : removed) tds.delete_vertex(v);
 
   const auto& region = regions ? *regions : old_regions;
@@ -220,6 +224,7 @@ bool replace_cells(Adapter& adapter, const std::vector<typename Adapter::Cell_ha
       if(outer[k][i] >= 0) adapter.add_facet(cells[k], i, boundary_patch[outer[k][i]]);
   for(std::size_t f = 0; f < new_facets.size(); ++f)
     adapter.add_facet(cells[facet_of_new_facet[f] / 4], facet_of_new_facet[f] % 4, new_facets[f].patch);
+  for(Cell_handle c : cells) adapter.changed(c);
   if(created) created->insert(created->end(), cells.begin(), cells.end());
   return true;
 }
