@@ -532,6 +532,20 @@ std::array<std::size_t, 3> change_and_reread(Adapter& adapter, BODT::internal::F
   return done;
 }
 
+// change_and_reread on a view of `adapter` that follows the changes: enough
+// flips, splits and re-reads of the new cells alone to have tested something.
+template <class Adapter>
+void expect_rereads_of_changes(Adapter& adapter, bool flip_outside, double threshold, int splits,
+                               std::size_t at_least_splits)
+{
+  BODT::internal::Flat_view<Adapter> view(adapter);
+  view.follow_changes();
+  const auto done = change_and_reread(adapter, view, flip_outside, threshold, splits);
+  EXPECT_GT(done[0], 10u) << "flips";
+  EXPECT_GE(done[1], at_least_splits) << "splits";
+  EXPECT_GE(done[2], 2u) << "re-reads of the new cells alone";
+}
+
 } // namespace
 
 // Flat_view::refresh when it follows the changes (re-reading only the cells
@@ -546,21 +560,11 @@ TEST(FlatView, ReReadOfTheLoggedChangesIsAFirstRead)
     SCOPED_TRACE(name(shape));
     C3t3 c3t3 = make_input(shape, Size::small).c3t3;
     BODT::internal::C3t3_adapter<C3t3> adapter(c3t3);
-    BODT::internal::Flat_view<BODT::internal::C3t3_adapter<C3t3>> view(adapter);
-    view.follow_changes();
-    const auto done = change_and_reread(adapter, view, true, 0.3, 12);
-    EXPECT_GT(done[0], 10u) << "flips";
-    EXPECT_GT(done[1], 3u) << "splits";
-    EXPECT_GE(done[2], 2u) << "re-reads of the new cells alone";
+    expect_rereads_of_changes(adapter, true, 0.3, 12, 4);
   }
   Delaunay tr = make_random_sphere();
   BODT::internal::Triangulation_3_adapter<Delaunay> adapter(tr);
-  BODT::internal::Flat_view<BODT::internal::Triangulation_3_adapter<Delaunay>> view(adapter);
-  view.follow_changes();
-  const auto done = change_and_reread(adapter, view, false, 0.05, 4);
-  EXPECT_GT(done[0], 10u) << "flips";
-  EXPECT_GT(done[1], 0u) << "splits";
-  EXPECT_GE(done[2], 2u) << "re-reads of the new cells alone";
+  expect_rereads_of_changes(adapter, false, 0.05, 4, 1);
 }
 
 TEST(Visitor, ReportsEveryIteration)

@@ -2,12 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The utilities the stages share (internal/Utilities/): the flat view's handle
-// index, the flip pass's tuple map, the parallel grouping, arrays first touched
-// on all threads, face matching, the flip and insertion passes' history of
-// failed attempts, and the in-place index shift of the flat view's re-reads.
+// index, the flip pass's tuple map and candidate queue, the parallel grouping,
+// arrays first touched on all threads, face matching, the flip and insertion
+// passes' history of failed attempts, and the in-place index shift of the flat
+// view's re-reads.
 #include "delaunay_cells.h"
 
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
+#include <CGAL/BODT_3/internal/Utilities/Candidate_queue.h>
 #include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Index_shift.h>
@@ -22,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <queue>
 #include <vector>
 
 namespace BODT = CGAL::BODT_3;
@@ -106,6 +109,10 @@ TEST(IdTupleMap, AgreesWithStdMapThroughGrowth)
     }
   }
   EXPECT_EQ(map.size(), reference.size());
+  // Room made for more keys keeps every entry; room for fewer changes nothing.
+  map.reserve(3 * reference.size());
+  map.reserve(10);
+  EXPECT_EQ(map.size(), reference.size());
   for(const auto& kv : reference)
   {
     const int* found = map.find(kv.first);
@@ -121,6 +128,52 @@ TEST(IdTupleMap, AgreesWithStdMapThroughGrowth)
   map.clear();
   EXPECT_EQ(map.size(), 0u);
   EXPECT_EQ(map.find(reference.begin()->first), nullptr);
+}
+
+// The flip and contraction passes' queue gives the order of one heap of all the
+// cells: starting cells and cells pushed while popping (some better than every
+// starting cell left, some worse), with many equal qualities, so that the ids
+// decide, and a cell pushed again after it was popped.
+TEST(CandidateQueue, PopsInTheOrderOfOneHeap)
+{
+  struct Entry
+  {
+    double quality;
+    int id;
+    bool operator<(const Entry& o) const   // "tried after": the worse quality first, then the lower id
+    {
+      if(quality != o.quality) return quality > o.quality;
+      return id > o.id;
+    }
+    bool operator==(const Entry& o) const { return quality == o.quality && id == o.id; }
+  };
+  CGAL::Random random(5);
+  int next_id = 0;
+  auto entry = [&] { return Entry{random.get_int(0, 50) / 10.0, next_id++}; };
+  std::vector<Entry> start;
+  for(int i = 0; i < 3000; ++i) start.push_back(entry());
+  std::priority_queue<Entry> heap(start.begin(), start.end());
+  CGAL::BODT_3::internal::Candidate_queue<Entry> queue{std::vector<Entry>(start)};
+  std::size_t popped = 0, pushed = 0;
+  while(!heap.empty())
+  {
+    ASSERT_FALSE(queue.empty());
+    const Entry expected = heap.top();
+    heap.pop();
+    const Entry got = queue.pop();
+    ASSERT_EQ(got, expected) << "pop " << popped;
+    ++popped;
+    if(random.get_int(0, 4) == 0 && pushed < 2000)
+    {
+      const Entry e = random.get_int(0, 3) == 0 ? got : entry();
+      heap.push(e);
+      queue.push(e);
+      ++pushed;
+    }
+  }
+  EXPECT_TRUE(queue.empty());
+  EXPECT_EQ(popped, start.size() + pushed);
+  EXPECT_GT(pushed, 300u);
 }
 
 // The parallel counting sort groups like a sequential stable one, on any number of threads.
@@ -293,7 +346,10 @@ TEST(IndexShift, RelocatesInPlaceAsARebuildWould)
       ASSERT_EQ(a.size(), width * expected.size());
       for(std::size_t k = 0; k < expected.size(); ++k)
         for(std::size_t w = 0; w < width; ++w)
-          if(expected[k] >= 0) ASSERT_EQ(a[width * k + w], expected[k]) << "round " << round << ", element " << k;
+          if(expected[k] >= 0)
+          {
+            ASSERT_EQ(a[width * k + w], expected[k]) << "round " << round << ", element " << k;
+          }
     }
     for(std::size_t k = 0; k < expected.size(); ++k)
       if(expected[k] >= 0)

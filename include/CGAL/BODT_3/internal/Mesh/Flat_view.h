@@ -429,10 +429,6 @@ private:
 
   static constexpr int unknown_neighbor = -2;
 
-  // A size with room for the cells a few passes add (flips add one cell at a
-  // time, insertion a few): in-place re-reads then keep the arrays' pages.
-  static std::size_t with_room(std::size_t n) { return n + n / 64 + 64; }
-
   void read_region(int k, Cell_handle c)
   {
     const auto r = adapter_.region(c);

@@ -254,6 +254,38 @@ private:
   double safe_ = 0;
 };
 
+/// A tetrahedron measured by `measure`, with what checking it against bounds
+/// needs: by the largest angle, the measure is made of the cosines the bounds
+/// check, so they are computed once (the moves' guard and the flips measure
+/// every candidate tetrahedron so). The points must outlive it.
+template <class Point>
+class Measured_tet
+{
+public:
+  Measured_tet(Quality_measure measure, const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+    : measure_(measure), p_{&p0, &p1, &p2, &p3}
+  {
+    quality_ = measure == Quality_measure::largest_dihedral_angle ? largest_angle_measure(p0, p1, p2, p3, cosines_)
+                                                                  : tet_quality(measure, p0, p1, p2, p3);
+  }
+
+  double quality() const { return quality_; }
+
+  /// Whether every dihedral angle is within `bounds` (`Dihedral_bounds::contains`).
+  bool within(const Dihedral_bounds& bounds) const
+  {
+    if(measure_ == Quality_measure::largest_dihedral_angle && quality_ >= 0) return bounds.contains(cosines_, 0.0);
+    return bounds.contains(*p_[0], *p_[1], *p_[2], *p_[3],
+                           measure_ == Quality_measure::min_dihedral_sine ? quality_ : 0.0);
+  }
+
+private:
+  Quality_measure measure_;
+  std::array<const Point*, 4> p_;
+  double quality_;
+  std::array<double, 6> cosines_;   // set when the measure is the largest angle and the tetrahedron is positive
+};
+
 /// Compares two groups of tetrahedra by their qualities, worst first: sorted in
 /// increasing order, the first value that differs decides. Returns 1 when `after`
 /// is better, -1 when it is worse, 0 when they tie over the shorter group. Both

@@ -296,14 +296,9 @@ private:
       if(!m.in_mesh[c]) continue;
       const auto& f = m.incidences[k].face;
       const Point &a = m.points[f[0]], &b = m.points[f[1]], &d = m.points[f[2]];
-      // By the largest angle, the measure is made of the cosines the bounds check: computed once.
-      std::array<double, 6> cosines;
-      const bool largest = measure_ == Quality_measure::largest_dihedral_angle;
-      const double q = largest ? largest_angle_measure(p, a, b, d, cosines) : tet_quality(measure_, p, a, b, d);
-      if(q < old_worst) return false;
-      if(largest && q >= 0 ? !bounds_.contains(cosines, 0.0)
-                           : !bounds_.contains(p, a, b, d, measure_ == Quality_measure::min_dihedral_sine ? q : 0.0))
-        return false;
+      const Measured_tet<Point> tet(measure_, p, a, b, d);
+      const double q = tet.quality();
+      if(q < old_worst || !tet.within(bounds_)) return false;
       trial.qualities.push_back(q);
     }
     return true;

@@ -223,7 +223,7 @@ public:
     // With room for a few more: after a pass that changed a few cells, the array
     // keeps its pages (fresh ones cost more than deriving it, on a virtual machine).
     const std::size_t total = static_cast<std::size_t>(dependent_begin_[nv]);
-    reserve_fresh(dependents_, total + total / 64 + 64, workers_.threads());
+    reserve_fresh(dependents_, with_room(total), workers_.threads());
     dependents_.resize(total);
     Thread_workers<std::vector<int>>(workers_.threads()).for_each(0, nv, [&](std::vector<int>& stamp, int u) {
       int next = dependent_begin_[u];

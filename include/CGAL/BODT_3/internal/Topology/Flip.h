@@ -115,12 +115,11 @@ public:
     const Bare_point p0 = point(v[0]), p1 = point(v[1]), p2 = point(v[2]), p3 = point(v[3]);
     if(kind != measured && kind != Region_kind::mesh)
       return CGAL::orientation(p0, p1, p2, p3) == CGAL::POSITIVE ? unmeasured : invalid;
-    const double q = tet_quality(measure, p0, p1, p2, p3);
+    const Measured_tet<Bare_point> tet(measure, p0, p1, p2, p3);
+    const double q = tet.quality();
     if(!(q > 0) || (kind == measured && q <= floor)) return invalid;
     if(CGAL::orientation(p0, p1, p2, p3) != CGAL::POSITIVE) return invalid;
-    if(kind == Region_kind::mesh &&
-       !bounds.contains(p0, p1, p2, p3, measure == Quality_measure::min_dihedral_sine ? q : 0.0))
-      return invalid;
+    if(kind == Region_kind::mesh && !tet.within(bounds)) return invalid;
     return kind == measured ? q : unmeasured;
   }
 

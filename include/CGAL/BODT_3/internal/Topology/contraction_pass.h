@@ -13,10 +13,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <cstddef>
-#include <deque>
-#include <functional>
 #include <optional>
-#include <queue>
 #include <vector>
 
 namespace CGAL {
@@ -73,17 +70,14 @@ Contraction_stats contraction_pass(Adapter& adapter, const Flip_options& opt, co
   else
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
       if(const std::optional<Candidate> e = candidate(c)) first.push_back(*e);
-  std::priority_queue<Candidate, std::deque<Candidate>> queue(std::less<Candidate>(),
-                                                             std::deque<Candidate>(first.begin(), first.end()));
-  first = std::vector<Candidate>();
+  Candidate_queue<Candidate> queue(std::move(first));
 
   const Edge_contraction<Adapter> contraction;
   Flip<Adapter> best, proposal;
   std::vector<Cell_handle> created;
   while(!queue.empty() && stats.contractions < budget)
   {
-    const Candidate e = queue.top();
-    queue.pop();
+    const Candidate e = queue.pop();
     if(history && !history->worth_trying(e.ids)) continue;
     if(!e.still_there(tr, vertex_id)) continue;
     best.clear();

@@ -34,6 +34,14 @@ public:
     size_ = 0;
   }
 
+  /// Makes room for `n` keys in all, so that up to that many are inserted
+  /// without growing; never shrinks.
+  void reserve(std::size_t n)
+  {
+    const std::size_t slots = n + n / 3 + 1;   // at most three quarters full
+    if(slots > slots_.size()) rehash(slots);
+  }
+
   /// The value of `key`, or null.
   const Value* find(const Key& key) const
   {
@@ -44,6 +52,17 @@ public:
       if(x.key[0] == empty) return nullptr;
       if(x.key == key) return &x.value;
     }
+  }
+
+  /// Starts loading the slot where a search for `key` begins, without waiting:
+  /// a caller about to look up several keys of a large map issues them all first.
+  void prefetch(const Key& key) const
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    if(!slots_.empty()) __builtin_prefetch(&slots_[slot(key)]);
+#else
+    (void)key;
+#endif
   }
 
   /// The value of `key`, inserted as `initial` if absent; `inserted` tells which.
@@ -96,13 +115,15 @@ private:
 
   std::size_t next(std::size_t s) const { return s + 1 == slots_.size() ? 0 : s + 1; }
 
-  void grow()
+  // By half again, not twice: the flip pass's maps are its largest arrays, and
+  // doubled they were three eighths to three quarters full (now half to three quarters).
+  void grow() { rehash(slots_.empty() ? 64 : slots_.size() + slots_.size() / 2); }
+
+  void rehash(std::size_t slots)
   {
     std::vector<Slot> old;
     old.swap(slots_);
-    // By half again, not twice: the flip pass's maps are its largest arrays, and
-    // doubled they were three eighths to three quarters full (now half to three quarters).
-    slots_.assign(old.empty() ? 64 : old.size() + old.size() / 2, Slot{empty_key(), Value()});
+    slots_.assign(slots, Slot{empty_key(), Value()});
     size_ = 0;
     for(const Slot& x : old)
       if(x.key[0] != empty)

@@ -45,6 +45,11 @@ void reserve_fresh(std::vector<T>& v, std::size_t n, int threads)
   touch_pages(v.data(), n * sizeof(T), threads);
 }
 
+/// A size with room for what a few passes add to an array of `n` elements (flips
+/// add one cell at a time, insertion a few): derived again in place after such a
+/// pass, the array keeps its pages.
+inline std::size_t with_room(std::size_t n) { return n + n / 64 + 64; }
+
 /// Sets `v` to `n` elements that the caller then overwrites all: growing by
 /// `resize` alone would double the capacity and copy the old elements, holding
 /// both arrays at once; here a larger `v` is dropped first and made at its size.
