@@ -128,6 +128,15 @@ TEST(IdTupleMap, AgreesWithStdMapThroughGrowth)
   map.clear();
   EXPECT_EQ(map.size(), 0u);
   EXPECT_EQ(map.find(reference.begin()->first), nullptr);
+  // A map reserved for no key or one still grows for more.
+  for(std::size_t n : {0, 1})
+  {
+    CGAL::BODT_3::internal::Id_tuple_map<4, int> small;
+    small.reserve(n);
+    for(int i = 0; i < 100; ++i) small.assign({i, i + 1, i + 2, i + 3}, i);
+    ASSERT_EQ(small.size(), 100u);
+    for(int i = 0; i < 100; ++i) ASSERT_EQ(*small.find({i, i + 1, i + 2, i + 3}), i);
+  }
 }
 
 // The flip and contraction passes' queue gives the order of one heap of all the

@@ -5,6 +5,7 @@
 
 #include <CGAL/assertions.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -117,7 +118,8 @@ private:
 
   // By half again, not twice: the flip pass's maps are its largest arrays, and
   // doubled they were three eighths to three quarters full (now half to three quarters).
-  void grow() { rehash(slots_.empty() ? 64 : slots_.size() + slots_.size() / 2); }
+  // At least 64 slots: a map reserved for few keys has fewer, which half again would not grow.
+  void grow() { rehash(std::max<std::size_t>(64, slots_.size() + slots_.size() / 2)); }
 
   void rehash(std::size_t slots)
   {
