@@ -7,6 +7,7 @@
 #include "report/json_report.h"
 
 #include <CGAL/BODT_3/IO/medit.h>
+#include <CGAL/BODT_3/boundary_distance.h>
 #include <CGAL/BODT_3/mesh_quality.h>
 #include <CGAL/BODT_3/internal/Quality/dihedral_angles.h>
 #include <CGAL/BODT_3/internal/Quality/tet_quality.h>
@@ -283,6 +284,44 @@ TEST(MeshQuality, SameReportOnAnyNumberOfThreads)
   }
   EXPECT_NEAR(one.volume_per_subdomain.at(1) + one.volume_per_subdomain.at(2), one.volume, 1e-12);
   EXPECT_GT(one.bad_tets_interior + one.bad_tets_touching_boundary, 0u);   // random points: bad tets everywhere
+}
+
+// The boundary distance against values known in closed form: one direction
+// alone, the other alone, both, a mesh's boundary against itself moved, and the
+// same value on any number of threads (the two directions are prepared side by side).
+TEST(BoundaryDistance, HausdorffOfKnownSurfaces)
+{
+  using Triangle = CGAL::BODT_3::Boundary_triangles::value_type;
+  using CGAL::BODT_3::hausdorff_distance;
+  const CGAL::BODT_3::Boundary_triangles small = {Triangle(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0))};
+  const CGAL::BODT_3::Boundary_triangles large = {Triangle(Point(0, 0, 0), Point(2, 0, 0), Point(0, 2, 0))};
+  // Every point of the small triangle lies on the large one; the large one's
+  // corner (2, 0, 0) is 1 from the small one (its corner (1, 0, 0)), the farthest.
+  for(int threads : {1, 2, 4})
+  {
+    EXPECT_DOUBLE_EQ(hausdorff_distance(small, large, 2, threads), 1.0) << threads;
+    EXPECT_DOUBLE_EQ(hausdorff_distance(large, small, 2, threads), 1.0) << threads;
+    EXPECT_EQ(hausdorff_distance(small, small, 2, threads), 0.0) << threads;
+    EXPECT_EQ(hausdorff_distance(small, {}, 2, threads), 0.0) << threads;
+  }
+
+  // A random Delaunay mesh's hull, against the same hull lifted by 0.01.
+  const Delaunay_cells d(2000);
+  Tet_mesh mesh;
+  mesh.points = d.points;
+  mesh.vertex_refs.assign(d.points.size(), 0);
+  mesh.tets = d.cells;
+  mesh.tet_labels.assign(d.cells.size(), 1);
+  const auto hull = CGAL::BODT_3::boundary_triangles(mesh);
+  ASSERT_GT(hull.size(), 100u);
+  CGAL::BODT_3::Boundary_triangles lifted;
+  const CGAL::Epick::Vector_3 up(0, 0, 0.01);
+  for(const auto& t : hull) lifted.emplace_back(t[0] + up, t[1] + up, t[2] + up);
+  const double one = hausdorff_distance(hull, lifted, 6, 1);
+  EXPECT_GT(one, 0.0);
+  EXPECT_LE(one, 0.01 * (1 + 1e-12));   // the lift moves every point by 0.01
+  for(int threads : {2, 4}) EXPECT_EQ(hausdorff_distance(hull, lifted, 6, threads), one) << threads;
+  EXPECT_EQ(hausdorff_distance(lifted, hull, 6, 1), one);
 }
 
 TEST(QualityMeasure, MatchesTheSinesOfTheDihedralAngles)

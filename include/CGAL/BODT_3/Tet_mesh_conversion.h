@@ -258,7 +258,8 @@ void glue_finite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
 // Step 4: an infinite cell on each boundary face: the finite cell's vertices with
 // the infinite vertex in place of the far one and two others swapped, so that both
 // cells induce opposite orientations on the face. Infinite cells are then glued
-// along boundary edges, which must have exactly two boundary faces.
+// along boundary edges, which must have exactly two boundary faces. The boundary
+// faces are found in parallel blocks, and the cells made in the tetrahedra's order.
 template <class C3T3>
 void close_with_infinite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
 {
@@ -266,12 +267,25 @@ void close_with_infinite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
   using Cell_handle = typename Tet_mesh_to_c3t3_state<C3T3>::Cell_handle;
   auto& tds = s.result.triangulation().tds();
   const Vertex_handle inf = s.infinite;
-  std::unordered_map<std::uint64_t, std::vector<std::pair<Cell_handle, int>>> hull_edges;
-  for(std::size_t t = 0; t < s.nt; ++t)
-    for(int i = 0; i < 4; ++i)
+  const Tet_face_matching& faces = *s.faces;
+  std::vector<std::vector<std::size_t>> block_faces(static_cast<std::size_t>(block_count(s.nt)));
+  s.workers.for_blocks(s.nt, [&](char&, int b, std::size_t begin, std::size_t end) {
+    for(std::size_t f = 4 * begin; f < 4 * end; ++f)
+      if(faces.match[f] < 0) block_faces[static_cast<std::size_t>(b)].push_back(f);
+  });
+  struct Hull_edge
+  {
+    std::uint64_t key;
+    Cell_handle cell;
+    int index;
+  };
+  std::vector<Hull_edge> hull_edges;
+  for(const auto& in_block : block_faces)
+    for(const std::size_t f : in_block)
     {
+      const std::size_t t = f / 4;
+      const int i = static_cast<int>(f % 4);
       const Cell_handle c = s.cells[t];
-      if(c->neighbor(i) != Cell_handle()) continue;
       std::array<Vertex_handle, 4> v = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
       std::array<int, 4> id = s.mesh.tets[t];
       v[i] = inf;
@@ -288,19 +302,23 @@ void close_with_infinite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
         int e[2], m = 0;
         for(int j = 0; j < 4; ++j)
           if(j != k && j != i) e[m++] = id[j];
-        hull_edges[packed_edge_key(e[0], e[1])].emplace_back(h, k);
+        hull_edges.push_back({packed_edge_key(e[0], e[1]), h, k});
       }
     }
-  for(const auto& he : hull_edges)
+  std::sort(hull_edges.begin(), hull_edges.end(), [](const Hull_edge& x, const Hull_edge& y) { return x.key < y.key; });
+  for(std::size_t first = 0, last = 0; first < hull_edges.size(); first = last)
   {
-    if(he.second.size() == 2)
+    while(last < hull_edges.size() && hull_edges[last].key == hull_edges[first].key) ++last;
+    if(last - first == 2)
     {
-      tds.set_adjacency(he.second[0].first, he.second[0].second, he.second[1].first, he.second[1].second);
+      tds.set_adjacency(hull_edges[first].cell, hull_edges[first].index, hull_edges[first + 1].cell,
+                        hull_edges[first + 1].index);
       continue;
     }
-    const int a = static_cast<int>(he.first >> 32), b = static_cast<int>(he.first & 0xffffffffu);
+    const std::uint64_t key = hull_edges[first].key;
+    const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
     s.fail("the boundary is not manifold at edge (" + std::to_string(a + 1) + " " + std::to_string(b + 1) +
-           "): " + std::to_string(he.second.size()) +
+           "): " + std::to_string(last - first) +
            " boundary triangles meet there, and a triangulation needs two to close the outside");
   }
 }

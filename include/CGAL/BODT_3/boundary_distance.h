@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -140,22 +141,33 @@ inline double hausdorff_distance(const Boundary_triangles& a, const Boundary_tri
   using Primitive = CGAL::AABB_triangle_primitive<K, Boundary_triangles::const_iterator>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
   internal::Thread_workers<char> workers(threads);
-  auto one_sided = [samples, &workers](const Boundary_triangles& from, const Boundary_triangles& to) {
-    if(from.empty() || to.empty()) return 0.0;
-    const std::vector<K::Point_3> points = internal::grid_points(from, samples);
-    Tree tree(to.begin(), to.end());
-    tree.accelerate_distance_queries();
+  // The two directions' samples and trees are made side by side (each is one
+  // thread's work), then each direction's queries are shared by all threads.
+  const Boundary_triangles* from[2] = {&a, &b};
+  const Boundary_triangles* to[2] = {&b, &a};
+  std::vector<K::Point_3> points[2];
+  std::optional<Tree> tree[2];
+  workers.for_each(0, 2, [&](char&, int k) {
+    if(from[k]->empty() || to[k]->empty()) return;
+    points[k] = internal::grid_points(*from[k], samples);
+    tree[k].emplace(to[k]->begin(), to[k]->end());
+    tree[k]->accelerate_distance_queries();
     // Built before the threads query it: queries only read.
-    tree.squared_distance(points.front());
-    std::vector<double> worst(static_cast<std::size_t>(internal::block_count(points.size(), 4096)), 0.0);
-    workers.for_blocks(points.size(), [&](char&, int block, std::size_t begin, std::size_t end) {
+    tree[k]->squared_distance(points[k].front());
+  }, 1);
+  double worst = 0;
+  for(int k = 0; k < 2; ++k)
+  {
+    if(!tree[k]) continue;
+    std::vector<double> block_worst(static_cast<std::size_t>(internal::block_count(points[k].size(), 4096)), 0.0);
+    workers.for_blocks(points[k].size(), [&](char&, int block, std::size_t begin, std::size_t end) {
       double w = 0;
-      for(std::size_t k = begin; k < end; ++k) w = std::max(w, tree.squared_distance(points[k]));
-      worst[static_cast<std::size_t>(block)] = w;
+      for(std::size_t i = begin; i < end; ++i) w = std::max(w, tree[k]->squared_distance(points[k][i]));
+      block_worst[static_cast<std::size_t>(block)] = w;
     }, 4096);
-    return std::sqrt(*std::max_element(worst.begin(), worst.end()));
-  };
-  return std::max(one_sided(a, b), one_sided(b, a));
+    worst = std::max(worst, *std::max_element(block_worst.begin(), block_worst.end()));
+  }
+  return std::sqrt(worst);
 }
 
 /// The paper's relative Hausdorff distance (Table 2): the distance between the

@@ -62,7 +62,10 @@ Tet_mesh_constraints find_constraints(const Tet_mesh& tm, const Flat_mesh<K>& fl
 
   // Embedded triangles, then the parts of each subdomain they separate. A listed
   // triangle's cells are found around its smallest vertex; the first listing wins.
-  std::vector<char> barrier(4 * flat.cells.size(), 0);
+  // Per facet, and only for a file with a labelled triangle.
+  std::vector<char> barrier;
+  if(std::any_of(tm.triangle_labels.begin(), tm.triangle_labels.end(), [](int l) { return l != 0; }))
+    barrier.assign(4 * flat.cells.size(), 0);
   std::vector<std::pair<int, std::size_t>> embedded;   // (4 c + i, triangle), once per facet
   for(std::size_t f = 0; f < tm.triangles.size(); ++f)
   {
@@ -83,7 +86,7 @@ Tet_mesh_constraints find_constraints(const Tet_mesh& tm, const Flat_mesh<K>& fl
   }
   std::sort(embedded.begin(), embedded.end());
   out.embedded_triangles = embedded.size();
-  std::vector<int> part(nc, -1);
+  std::vector<int> part(embedded.empty() ? 0 : nc, -1);
   std::vector<int> label_of_part;
   int fresh = 1;
   for(int l : flat.subdomain) fresh = std::max(fresh, l + 1);

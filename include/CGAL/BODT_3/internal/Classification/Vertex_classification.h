@@ -13,7 +13,6 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <set>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -90,25 +89,46 @@ inline bool is_one_cycle(const std::vector<std::array<int, 2>>& facets)
 // none) together with the pair of subdomains it separates, so that one label on two
 // surfaces (a file giving the outer boundary and an interface the same ref, or the
 // outer boundary on both sides of an interface) still makes two patches, and the
-// rim where they meet is a junction. Returns, per edge of a surface facet, the
-// patches of the facets around it (each interface facet seen from both its cells).
+// rim where they meet is a junction. Returns the edges of surface facets around
+// which the facets (each interface facet seen from both its cells) are of two
+// patches or more, in the order of a hash map of all of them.
 template <class K>
-std::unordered_map<std::pair<int, int>, std::set<int>, Id_hash> edge_patches(const Flat_mesh<K>& mesh,
-                                                                             const Feature_hints& hints)
+std::vector<std::pair<int, int>> junction_edges(const Flat_mesh<K>& mesh, const Feature_hints& hints)
 {
   std::unordered_map<std::array<int, 3>, int, Id_hash> label;
   for(const auto& fp : hints.facet_patches) label.emplace(sorted(fp.first), fp.second);
   constexpr int unlabelled = (std::numeric_limits<int>::min)();
   std::map<std::array<int, 3>, int> patch_of;   // (label, subdomain, subdomain) -> patch
-  std::unordered_map<std::pair<int, int>, std::set<int>, Id_hash> out;
-  for(int c = 0; c < static_cast<int>(mesh.cells.size()); ++c)
-  {
-    if(!mesh.in_mesh[c]) continue;
-    for(int i = 0; i < 4; ++i)
+  // The surface facets (4 c + i) in parallel blocks, then the map in their order.
+  const std::size_t nc = mesh.cells.size();
+  std::vector<std::vector<int>> block_facets(static_cast<std::size_t>(block_count(nc)));
+  Thread_workers<char> workers(mesh.threads);
+  workers.for_blocks(nc, [&](char&, int b, std::size_t begin, std::size_t end) {
+    for(std::size_t c = begin; c < end; ++c)
     {
-      const int n = mesh.neighbor[4 * c + i];
+      if(!mesh.in_mesh[c]) continue;
+      for(int i = 0; i < 4; ++i)
+      {
+        const int n = mesh.neighbor[4 * c + static_cast<std::size_t>(i)];
+        const bool outside = n < 0 || !mesh.in_mesh[n];
+        if(outside || mesh.subdomain[n] != mesh.subdomain[c])
+          block_facets[static_cast<std::size_t>(b)].push_back(static_cast<int>(4 * c) + i);
+      }
+    }
+  });
+  // Per edge, its first patch and whether another one meets it.
+  struct Patches
+  {
+    int first = -1;
+    bool several = false;
+  };
+  std::unordered_map<std::pair<int, int>, Patches, Id_hash> around;
+  for(const auto& in_block : block_facets)
+    for(const int facet : in_block)
+    {
+      const int c = facet / 4, i = facet % 4;
+      const int n = mesh.neighbor[static_cast<std::size_t>(facet)];
       const bool outside = n < 0 || !mesh.in_mesh[n];
-      if(!outside && mesh.subdomain[n] == mesh.subdomain[c]) continue;
       const auto& o = facet_opposite[i];
       const std::array<int, 3> f = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
       const auto it = label.find(sorted(f));
@@ -116,9 +136,16 @@ std::unordered_map<std::pair<int, int>, std::set<int>, Id_hash> edge_patches(con
       const std::array<int, 3> key = {it != label.end() ? it->second : unlabelled, (std::min)(s0, s1),
                                       (std::max)(s0, s1)};
       const int patch = patch_of.emplace(key, static_cast<int>(patch_of.size())).first->second;
-      for(int k = 0; k < 3; ++k) out[edge_key(f[k], f[(k + 1) % 3])].insert(patch);
+      for(int k = 0; k < 3; ++k)
+      {
+        Patches& p = around[edge_key(f[k], f[(k + 1) % 3])];
+        if(p.first < 0) p.first = patch;
+        else if(p.first != patch) p.several = true;
+      }
     }
-  }
+  std::vector<std::pair<int, int>> out;
+  for(const auto& [edge, patches] : around)
+    if(patches.several) out.push_back(edge);
   return out;
 }
 
@@ -191,7 +218,7 @@ std::array<int, 2> voted_edge_neighbors(const Flat_mesh<K>& mesh, const std::vec
 /// 3. Inside one subdomain, with no boundary facet: interior, unless the hints say
 ///    it lies on a feature.
 /// 4. With feature preservation on, feature edges are the hints' edges and the
-///    edges where facets of two or more surface patches meet (`edge_patches`: a
+///    edges where facets of two or more surface patches meet (`junction_edges`: a
 ///    patch is a facet's label and the pair of subdomains it separates, so interfaces
 ///    and their rims on the boundary are features). A vertex on exactly two feature
 ///    edges lies on a feature curve; on one, or three and more, or two that turn by
@@ -229,8 +256,7 @@ Vertex_classification classify_vertices(const Flat_mesh<K>& mesh, const Feature_
   {
     for(const auto& e : hints.feature_edges)
       if(e[0] != e[1]) feature_edges.insert(internal::edge_key(e[0], e[1]));
-    for(const auto& ep : internal::edge_patches(mesh, hints))
-      if(ep.second.size() >= 2) feature_edges.insert(ep.first);
+    for(const auto& e : internal::junction_edges(mesh, hints)) feature_edges.insert(e);
   }
   std::vector<std::vector<int>> feature_nbrs(nv);
   for(const auto& e : feature_edges)

@@ -4,6 +4,8 @@
 #define CGAL_BODT_3_INTERNAL_MESH_FLAT_MESH_H
 
 #include <CGAL/BODT_3/internal/Moves/Vertex_star.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
+#include <CGAL/BODT_3/internal/Utilities/first_touch.h>
 #include <CGAL/BODT_3/internal/Utilities/group_by_key.h>
 #include <CGAL/BODT_3/internal/Utilities/id_keys.h>
 #include <CGAL/BODT_3/internal/Utilities/tet_face_matching.h>
@@ -156,8 +158,11 @@ struct Flat_mesh
   /// The cell across each face, from matched faces of `cells`.
   void set_neighbors(const Tet_face_matching& faces)
   {
-    neighbor.resize(faces.match.size());
-    for(std::size_t f = 0; f < faces.match.size(); ++f) neighbor[f] = faces.match[f] < 0 ? -1 : faces.match[f] / 4;
+    const std::size_t n = faces.match.size();
+    resize_for_overwrite(neighbor, n, threads);
+    Thread_workers<char>(threads).for_blocks(n, [&](char&, int, std::size_t begin, std::size_t end) {
+      for(std::size_t f = begin; f < end; ++f) neighbor[f] = faces.match[f] < 0 ? -1 : faces.match[f] / 4;
+    });
   }
 
 private:

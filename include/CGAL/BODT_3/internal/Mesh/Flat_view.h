@@ -138,8 +138,13 @@ private:
     const std::size_t size = handles_.size() + (tr.number_of_vertices() - known);
     handles_.reserve(size);
     mesh_.points.reserve(size);
+    if(handles_.empty()) index_.reset(size);   // a first read: the map at its size, not grown by doubling
+    // The map's slots of the vertex a few ahead are loaded meanwhile (a cache miss each).
+    auto ahead = tr.finite_vertices_begin();
+    for(int k = 0; k < 16 && ahead != tr.finite_vertices_end(); ++k) ++ahead;
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
     {
+      if(ahead != tr.finite_vertices_end()) index_.prefetch(ahead++);
       // A new vertex may live where a removed one did: it gets a new index.
       const int known = index_.find(v);
       if(known >= 0 && handles_[known] != Vertex_handle()) continue;
@@ -196,7 +201,8 @@ private:
     const int threads = workers_.threads();
     // Room for a few more, which the next re-reads add in place (read_changed_cells);
     // push_back alone would hold up to twice their number.
-    reserve_fresh(cells_, with_room(tr.number_of_finite_cells()), threads);
+    // All cells, infinite ones too: number_of_finite_cells() would count them one by one.
+    reserve_fresh(cells_, with_room(tr.number_of_cells()), threads);
     for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells_.push_back(c);
     read_slots();
     const std::size_t nc = cells_.size();
@@ -239,7 +245,14 @@ private:
     std::vector<char>().swap(is_new);
     Handle_index_map<Cell_handle> fresh_index;
     fresh_index.reset(fresh.size());
-    for(int k : fresh) fresh_index.insert(cells_[static_cast<std::size_t>(k)], k);
+    // Each insertion misses the cache (a first read inserts every cell): the slots of
+    // the insertions a few ahead are loaded meanwhile.
+    constexpr std::size_t ahead = 16;
+    for(std::size_t f = 0; f < fresh.size(); ++f)
+    {
+      if(f + ahead < fresh.size()) fresh_index.prefetch(cells_[static_cast<std::size_t>(fresh[f + ahead])]);
+      fresh_index.insert(cells_[static_cast<std::size_t>(fresh[f])], fresh[f]);
+    }
 
     // The cells kept: a neighbour that stayed is where it went; any other is new
     // (it then learns this cell across the same triangle) or infinite.
