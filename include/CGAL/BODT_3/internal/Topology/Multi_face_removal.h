@@ -48,8 +48,11 @@ private:
 
 public:
   /// Proposes a multi-face removal rooted at facet (c, i) in `out`; returns false
-  /// if none is allowed or valid. `out.improves()` tells whether to apply it.
-  bool operator()(const Flip_context<Adapter>& ctx, Cell_handle c, int i, Flip<Adapter>& out) const
+  /// if none is allowed or valid. `out.improves()` tells whether to apply it. A
+  /// proposal whose worst new cell is not above `at_least` (the best the caller
+  /// has) is not checked for validity, as the caller will not take it.
+  bool operator()(const Flip_context<Adapter>& ctx, Cell_handle c, int i, Flip<Adapter>& out,
+                  double at_least = -std::numeric_limits<double>::infinity()) const
   {
     out.clear();
     const Cell_handle n = c->neighbor(i);
@@ -149,7 +152,7 @@ public:
     out.kind = chosen == 1 ? Flip_kind::flip_2_3 : Flip_kind::multi_face_removal;
     // An edge u w elsewhere would make the new cells overlap others: checked only
     // for a flip worth applying, since it costs most.
-    return !(out.improves() && ctx.adapter.tds().is_edge(u, w));
+    return !(out.improves() && out.new_worst > at_least && ctx.adapter.tds().is_edge(u, w));
   }
 };
 

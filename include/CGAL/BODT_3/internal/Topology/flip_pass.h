@@ -83,7 +83,7 @@ struct Flip_candidate
       now[k] = vertex_id(cell->vertex(k));
     }
     std::sort(now.begin(), now.end());
-    return now == ids;
+    return same_ids(now, ids);
   }
 };
 
@@ -229,13 +229,21 @@ private:
     std::vector<Candidate> start;
     if(given)
     {
+      // The given cells that the pass selects, judged in parallel and kept in order.
       start.swap(*given);
-      start.erase(std::remove_if(start.begin(), start.end(), [&](const Candidate& m) {
+      std::vector<char> selected(start.size());
+      evaluators_.for_each(0, static_cast<int>(start.size()), [&](Evaluator&, int k) {
+        const Candidate& m = start[static_cast<std::size_t>(k)];
         CGAL_assertion(ctx_.flippable(adapter_.region(m.cell)));
         const Cell_handle c = m.cell;
-        return !(flip_selection_quality(measure_, m.quality, ctx_.point(c->vertex(0)), ctx_.point(c->vertex(1)),
-                                        ctx_.point(c->vertex(2)), ctx_.point(c->vertex(3))) < opt_.quality_threshold);
-      }), start.end());
+        selected[static_cast<std::size_t>(k)] =
+            flip_selection_quality(measure_, m.quality, ctx_.point(c->vertex(0)), ctx_.point(c->vertex(1)),
+                                   ctx_.point(c->vertex(2)), ctx_.point(c->vertex(3))) < opt_.quality_threshold;
+      }, 1024);
+      std::size_t kept = 0;
+      for(std::size_t k = 0; k < start.size(); ++k)
+        if(selected[k]) start[kept++] = start[k];
+      start.resize(kept);
     }
     else
     {
@@ -243,9 +251,10 @@ private:
       for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
         if(const std::optional<Candidate> e = candidate(c, vertex_id)) start.push_back(*e);
     }
-    useless_edges_.reserve(2 * start.size());
-    useless_faces_.reserve(3 * start.size());
-    if(history) history->failed.reserve(history->failed.size() + start.size());
+    const int threads = evaluators_.threads();
+    useless_edges_.reserve(2 * start.size(), threads);
+    useless_faces_.reserve(3 * start.size(), threads);
+    if(history) history->failed.reserve(history->failed.size() + start.size(), threads);
     return Candidate_queue<Candidate>(std::move(start));
   }
 
@@ -320,7 +329,10 @@ private:
       ev.neighbourhood[4 + i] = apex_id;
       const Flip_count* known = useless_faces_.find(key);
       if(known && still_useless(*known, {id[0], id[1], id[2], id[3], apex_id})) continue;
-      if(w.face_removal(ctx_, c, i, candidate) && candidate.improves())
+      // A removal that cannot beat the best so far is not checked for validity;
+      // it then says nothing about the face's own worth, and is not recorded.
+      const double at_least = ev.best.improves() ? ev.best.new_worst : -std::numeric_limits<double>::infinity();
+      if(w.face_removal(ctx_, c, i, candidate, at_least) && candidate.improves())
         consider();
       else
         ev.useless_faces.push_back(key);

@@ -3,6 +3,9 @@
 #ifndef CGAL_BODT_3_INTERNAL_UTILITIES_ID_TUPLE_MAP_H
 #define CGAL_BODT_3_INTERNAL_UTILITIES_ID_TUPLE_MAP_H
 
+#include <CGAL/BODT_3/internal/Utilities/first_touch.h>
+#include <CGAL/BODT_3/internal/Utilities/id_keys.h>
+
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -36,11 +39,12 @@ public:
   }
 
   /// Makes room for `n` keys in all, so that up to that many are inserted
-  /// without growing; never shrinks.
-  void reserve(std::size_t n)
+  /// without growing; never shrinks. The new slots' pages are made resident on
+  /// `threads` threads (a flip pass reserves megabytes at its start).
+  void reserve(std::size_t n, int threads = 1)
   {
     const std::size_t slots = n + n / 3 + 1;   // at most three quarters full
-    if(slots > slots_.size()) rehash(slots);
+    if(slots > slots_.size()) rehash(slots, threads);
   }
 
   /// The value of `key`, or null.
@@ -51,7 +55,7 @@ public:
     {
       const Slot& x = slots_[s];
       if(x.key[0] == empty) return nullptr;
-      if(x.key == key) return &x.value;
+      if(same_ids(x.key, key)) return &x.value;
     }
   }
 
@@ -74,7 +78,7 @@ public:
     for(std::size_t s = slot(key);; s = next(s))
     {
       Slot& x = slots_[s];
-      if(x.key == key)
+      if(same_ids(x.key, key))
       {
         inserted = false;
         return x.value;
@@ -121,11 +125,11 @@ private:
   // At least 64 slots: a map reserved for few keys has fewer, which half again would not grow.
   void grow() { rehash(std::max<std::size_t>(64, slots_.size() + slots_.size() / 2)); }
 
-  void rehash(std::size_t slots)
+  void rehash(std::size_t slots, int threads = 1)
   {
     std::vector<Slot> old;
     old.swap(slots_);
-    slots_.assign(slots, Slot{empty_key(), Value()});
+    assign_fresh(slots_, slots, Slot{empty_key(), Value()}, threads);
     size_ = 0;
     for(const Slot& x : old)
       if(x.key[0] != empty)
