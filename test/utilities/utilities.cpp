@@ -140,6 +140,26 @@ TEST(IdTupleMap, AgreesWithStdMapThroughGrowth)
   }
 }
 
+// The indices a predicate keeps, found in parallel blocks, are the serial filter's,
+// in order, on any number of threads (several blocks, empty ones among them).
+TEST(ThreadWorkers, IndicesWhereIsTheSerialFilter)
+{
+  const std::size_t n = 5 * CGAL::BODT_3::internal::scan_block + 17;
+  auto keep = [n](std::size_t i) { return i % 7 == 3 || (i > n / 2 && i < n / 2 + 100); };
+  std::vector<std::size_t> serial;
+  for(std::size_t i = 0; i < n; ++i)
+    if(keep(i)) serial.push_back(i);
+  auto sparse = [](std::size_t i) { return i == 5 || i == 3 * CGAL::BODT_3::internal::scan_block + 1; };
+  for(int threads : {1, 2, 4})
+  {
+    CGAL::BODT_3::internal::Thread_workers<char> workers(threads);
+    EXPECT_EQ(workers.indices_where(n, keep), serial) << threads;
+    EXPECT_EQ(workers.indices_where(n, sparse),
+              (std::vector<std::size_t>{5, 3 * CGAL::BODT_3::internal::scan_block + 1})) << threads;
+    EXPECT_TRUE(workers.indices_where(0, keep).empty());
+  }
+}
+
 // The flip and contraction passes' queue gives the order of one heap of all the
 // cells: starting cells and cells pushed while popping (some better than every
 // starting cell left, some worse), with many equal qualities, so that the ids

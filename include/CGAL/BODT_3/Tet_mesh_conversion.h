@@ -268,11 +268,8 @@ void close_with_infinite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
   auto& tds = s.result.triangulation().tds();
   const Vertex_handle inf = s.infinite;
   const Tet_face_matching& faces = *s.faces;
-  std::vector<std::vector<std::size_t>> block_faces(static_cast<std::size_t>(block_count(s.nt)));
-  s.workers.for_blocks(s.nt, [&](char&, int b, std::size_t begin, std::size_t end) {
-    for(std::size_t f = 4 * begin; f < 4 * end; ++f)
-      if(faces.match[f] < 0) block_faces[static_cast<std::size_t>(b)].push_back(f);
-  });
+  const std::vector<std::size_t> boundary =
+      s.workers.indices_where(4 * s.nt, [&](std::size_t f) { return faces.match[f] < 0; });
   struct Hull_edge
   {
     std::uint64_t key;
@@ -280,31 +277,30 @@ void close_with_infinite_cells(Tet_mesh_to_c3t3_state<C3T3>& s)
     int index;
   };
   std::vector<Hull_edge> hull_edges;
-  for(const auto& in_block : block_faces)
-    for(const std::size_t f : in_block)
+  for(const std::size_t f : boundary)
+  {
+    const std::size_t t = f / 4;
+    const int i = static_cast<int>(f % 4);
+    const Cell_handle c = s.cells[t];
+    std::array<Vertex_handle, 4> v = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
+    std::array<int, 4> id = s.mesh.tets[t];
+    v[i] = inf;
+    id[i] = -1;
+    std::swap(v[(i + 1) & 3], v[(i + 2) & 3]);
+    std::swap(id[(i + 1) & 3], id[(i + 2) & 3]);
+    const Cell_handle h = tds.create_cell(v[0], v[1], v[2], v[3]);
+    if(inf->cell() == Cell_handle()) inf->set_cell(h);
+    tds.set_adjacency(h, i, c, i);
+    for(int k = 0; k < 4; ++k)
     {
-      const std::size_t t = f / 4;
-      const int i = static_cast<int>(f % 4);
-      const Cell_handle c = s.cells[t];
-      std::array<Vertex_handle, 4> v = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
-      std::array<int, 4> id = s.mesh.tets[t];
-      v[i] = inf;
-      id[i] = -1;
-      std::swap(v[(i + 1) & 3], v[(i + 2) & 3]);
-      std::swap(id[(i + 1) & 3], id[(i + 2) & 3]);
-      const Cell_handle h = tds.create_cell(v[0], v[1], v[2], v[3]);
-      if(inf->cell() == Cell_handle()) inf->set_cell(h);
-      tds.set_adjacency(h, i, c, i);
-      for(int k = 0; k < 4; ++k)
-      {
-        if(k == i) continue;
-        // The face opposite `k` holds the infinite vertex and the boundary edge `e`.
-        int e[2], m = 0;
-        for(int j = 0; j < 4; ++j)
-          if(j != k && j != i) e[m++] = id[j];
-        hull_edges.push_back({packed_edge_key(e[0], e[1]), h, k});
-      }
+      if(k == i) continue;
+      // The face opposite `k` holds the infinite vertex and the boundary edge `e`.
+      int e[2], m = 0;
+      for(int j = 0; j < 4; ++j)
+        if(j != k && j != i) e[m++] = id[j];
+      hull_edges.push_back({packed_edge_key(e[0], e[1]), h, k});
     }
+  }
   std::sort(hull_edges.begin(), hull_edges.end(), [](const Hull_edge& x, const Hull_edge& y) { return x.key < y.key; });
   for(std::size_t first = 0, last = 0; first < hull_edges.size(); first = last)
   {
@@ -425,47 +421,44 @@ void add_complex_facets(Tet_mesh_to_c3t3_state<C3T3>& s)
   std::vector<Subdomain_index> label(nt);
   for(std::size_t t = 0; t < nt; ++t)
     if(mesh.in_mesh(t, all_zero)) label[t] = complex_subdomain<C3T3>(mesh, t, all_zero);
-  std::vector<std::vector<std::pair<std::size_t, int>>> block_faces(static_cast<std::size_t>(block_count(nt)));
-  s.workers.for_blocks(nt, [&](char&, int b, std::size_t begin, std::size_t end) {
-    for(std::size_t t = begin; t < end; ++t)
-      for(int i = 0; i < 4; ++i)
-      {
-        const int m = faces.match[4 * t + static_cast<std::size_t>(i)];
-        const Subdomain_index other = m < 0 ? Subdomain_index() : label[static_cast<std::size_t>(m / 4)];
-        if(!(label[t] == other) && (m < 0 || static_cast<std::size_t>(m / 4) > t))
-          block_faces[static_cast<std::size_t>(b)].emplace_back(t, i);
-      }
+  // The faces (4 t + i) between two labels, each once (from the tetrahedron with the smaller index).
+  const std::vector<std::size_t> between = s.workers.indices_where(4 * nt, [&](std::size_t f) {
+    const std::size_t t = f / 4;
+    const int m = faces.match[f];
+    const Subdomain_index other = m < 0 ? Subdomain_index() : label[static_cast<std::size_t>(m / 4)];
+    return !(label[t] == other) && (m < 0 || static_cast<std::size_t>(m / 4) > t);
   });
   std::map<std::pair<Subdomain_index, Subdomain_index>, Surface_patch_index> derived;
-  for(const auto& found : block_faces)
-    for(const auto& [t, i] : found)
+  for(const std::size_t f : between)
+  {
+    const std::size_t t = f / 4;
+    const int i = static_cast<int>(f % 4);
+    const auto c = s.cells[t];
+    const Subdomain_index s0 = label[t], s1 = s.result.subdomain_index(c->neighbor(i));
+    const std::pair<Subdomain_index, Subdomain_index> sides = (std::minmax)(s0, s1);
+    Surface_patch_index patch;
+    if constexpr(Is_pair<Surface_patch_index>::value)
+      patch = Surface_patch_index(sides.first, sides.second);
+    else
     {
-      const auto c = s.cells[t];
-      const Subdomain_index s0 = label[t], s1 = s.result.subdomain_index(c->neighbor(i));
-      const std::pair<Subdomain_index, Subdomain_index> sides = (std::minmax)(s0, s1);
-      Surface_patch_index patch;
-      if constexpr(Is_pair<Surface_patch_index>::value)
-        patch = Surface_patch_index(sides.first, sides.second);
+      const auto it = listed.find(sorted(oriented_face(mesh.tets[t], i)));
+      if(it != listed.end() && !(Surface_patch_index(it->second) == Surface_patch_index()))
+        patch = Surface_patch_index(it->second);
       else
       {
-        const auto it = listed.find(sorted(oriented_face(mesh.tets[t], i)));
-        if(it != listed.end() && !(Surface_patch_index(it->second) == Surface_patch_index()))
-          patch = Surface_patch_index(it->second);
-        else
-        {
-          auto d = derived.emplace(sides, Surface_patch_index(next_patch));
-          if(d.second) ++next_patch;
-          patch = d.first->second;
-        }
+        auto d = derived.emplace(sides, Surface_patch_index(next_patch));
+        if(d.second) ++next_patch;
+        patch = d.first->second;
       }
-      s.result.add_to_complex(c, i, patch);
-      for(int k = 0; k < 4; ++k)
-        if(k != i)
-        {
-          s.result.set_dimension(c->vertex(k), 2);
-          set_vertex_index(c->vertex(k), patch);
-        }
     }
+    s.result.add_to_complex(c, i, patch);
+    for(int k = 0; k < 4; ++k)
+      if(k != i)
+      {
+        s.result.set_dimension(c->vertex(k), 2);
+        set_vertex_index(c->vertex(k), patch);
+      }
+  }
 }
 
 // Step 6c: `mesh.edges` as curve edges of the complex, their vertices of dimension 1.

@@ -99,23 +99,14 @@ std::vector<std::pair<int, int>> junction_edges(const Flat_mesh<K>& mesh, const 
   for(const auto& fp : hints.facet_patches) label.emplace(sorted(fp.first), fp.second);
   constexpr int unlabelled = (std::numeric_limits<int>::min)();
   std::map<std::array<int, 3>, int> patch_of;   // (label, subdomain, subdomain) -> patch
-  // The surface facets (4 c + i) in parallel blocks, then the map in their order.
-  const std::size_t nc = mesh.cells.size();
-  std::vector<std::vector<int>> block_facets(static_cast<std::size_t>(block_count(nc)));
-  Thread_workers<char> workers(mesh.threads);
-  workers.for_blocks(nc, [&](char&, int b, std::size_t begin, std::size_t end) {
-    for(std::size_t c = begin; c < end; ++c)
-    {
-      if(!mesh.in_mesh[c]) continue;
-      for(int i = 0; i < 4; ++i)
-      {
-        const int n = mesh.neighbor[4 * c + static_cast<std::size_t>(i)];
-        const bool outside = n < 0 || !mesh.in_mesh[n];
-        if(outside || mesh.subdomain[n] != mesh.subdomain[c])
-          block_facets[static_cast<std::size_t>(b)].push_back(static_cast<int>(4 * c) + i);
-      }
-    }
-  });
+  // The surface facets (4 c + i), found in parallel blocks, then the map in their order.
+  auto outside = [&](int n) { return n < 0 || !mesh.in_mesh[n]; };
+  const std::vector<std::size_t> surface =
+      Thread_workers<char>(mesh.threads).indices_where(4 * mesh.cells.size(), [&](std::size_t f) {
+        const std::size_t c = f / 4;
+        const int n = mesh.neighbor[f];
+        return mesh.in_mesh[c] && (outside(n) || mesh.subdomain[n] != mesh.subdomain[c]);
+      });
   // Per edge, its first patch and whether another one meets it.
   struct Patches
   {
@@ -123,26 +114,24 @@ std::vector<std::pair<int, int>> junction_edges(const Flat_mesh<K>& mesh, const 
     bool several = false;
   };
   std::unordered_map<std::pair<int, int>, Patches, Id_hash> around;
-  for(const auto& in_block : block_facets)
-    for(const int facet : in_block)
+  for(const std::size_t facet : surface)
+  {
+    const int c = static_cast<int>(facet / 4), i = static_cast<int>(facet % 4);
+    const int n = mesh.neighbor[facet];
+    const auto& o = facet_opposite[i];
+    const std::array<int, 3> f = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
+    const auto it = label.find(sorted(f));
+    const int s0 = mesh.subdomain[c], s1 = outside(n) ? 0 : mesh.subdomain[n];
+    const std::array<int, 3> key = {it != label.end() ? it->second : unlabelled, (std::min)(s0, s1),
+                                    (std::max)(s0, s1)};
+    const int patch = patch_of.emplace(key, static_cast<int>(patch_of.size())).first->second;
+    for(int k = 0; k < 3; ++k)
     {
-      const int c = facet / 4, i = facet % 4;
-      const int n = mesh.neighbor[static_cast<std::size_t>(facet)];
-      const bool outside = n < 0 || !mesh.in_mesh[n];
-      const auto& o = facet_opposite[i];
-      const std::array<int, 3> f = {mesh.cells[c][o[0]], mesh.cells[c][o[1]], mesh.cells[c][o[2]]};
-      const auto it = label.find(sorted(f));
-      const int s0 = mesh.subdomain[c], s1 = outside ? 0 : mesh.subdomain[n];
-      const std::array<int, 3> key = {it != label.end() ? it->second : unlabelled, (std::min)(s0, s1),
-                                      (std::max)(s0, s1)};
-      const int patch = patch_of.emplace(key, static_cast<int>(patch_of.size())).first->second;
-      for(int k = 0; k < 3; ++k)
-      {
-        Patches& p = around[edge_key(f[k], f[(k + 1) % 3])];
-        if(p.first < 0) p.first = patch;
-        else if(p.first != patch) p.several = true;
-      }
+      Patches& p = around[edge_key(f[k], f[(k + 1) % 3])];
+      if(p.first < 0) p.first = patch;
+      else if(p.first != patch) p.several = true;
     }
+  }
   std::vector<std::pair<int, int>> out;
   for(const auto& [edge, patches] : around)
     if(patches.several) out.push_back(edge);

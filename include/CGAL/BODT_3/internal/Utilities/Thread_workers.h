@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <vector>
 #include <cstddef>
 
 namespace CGAL {
@@ -69,6 +70,24 @@ public:
       const std::size_t begin = static_cast<std::size_t>(b) * block;
       f(w, b, begin, std::min(n, begin + block));
     }, 1);
+  }
+
+  /// The indices i in [0, n) for which `keep(i)` holds, in increasing order,
+  /// found in blocks (`for_blocks`): the same list on any number of threads.
+  template <class Keep>
+  std::vector<std::size_t> indices_where(std::size_t n, const Keep& keep)
+  {
+    std::vector<std::vector<std::size_t>> found(static_cast<std::size_t>(block_count(n)));
+    for_blocks(n, [&](Worker&, int b, std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+        if(keep(i)) found[static_cast<std::size_t>(b)].push_back(i);
+    });
+    std::size_t total = 0;
+    for(const auto& f : found) total += f.size();
+    std::vector<std::size_t> out;
+    out.reserve(total);
+    for(const auto& f : found) out.insert(out.end(), f.begin(), f.end());
+    return out;
   }
 
   /// Visits every worker (in no particular order).
