@@ -169,7 +169,8 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
  *   \cgalParamNBegin{max_boundary_distance}
  *     \cgalParamDescription{how far the boundary and the interfaces may go from the input's, as a fraction
  *       of the largest side of the input surface's bounding box (like MMG's `-hausd`, relative): a step
- *       that would take a surface vertex, or a sample of its surface triangles, farther is refused.
+ *       that would take a point of the surface farther from the input's, or leave a point of the input's
+ *       surface farther from the mesh's, is refused (both tested exactly, up to rounding).
  *       With B-ODT only (NODT projects onto the input's surface); 0: no bound}
  *     \cgalParamType{`double`} \cgalParamDefault{0: no bound}
  *   \cgalParamNEnd

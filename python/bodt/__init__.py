@@ -78,8 +78,8 @@ def smooth(points, tets=None, labels=None, triangles=None, triangle_labels=None,
     freeze_bound (0.0003): a vertex whose move is shorter than this fraction of its
         local size stays put until a neighbour moves; 0: every vertex moves every time.
     max_boundary_distance (0: no bound): a step that takes the boundary or an interface
-        farther than this from the input's (relative to the largest side of its
-        bounding box) is refused; 0: no bound.
+        farther than this from the input's, or the input's farther from them
+        (relative to the largest side of its bounding box), is refused; 0: no bound.
     method ('bodt'): 'bodt', every vertex moves; 'odt', interior vertices only;
         'flips', no vertex moves (flips and insertion alone); 'nodt', boundary
         vertices by Natural ODT, projected back onto the input's boundary (the

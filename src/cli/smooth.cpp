@@ -320,7 +320,8 @@ Command add_smooth(CLI::App& command)
       ->check(CLI::NonNegativeNumber);
   command.add_option("--max-boundary-distance", o->smoothing.max_boundary_distance,
                      "refuse any step that takes the boundary or an interface farther than D from the input's, "
-                     "D relative to the largest side of its bounding box (default 0: no bound)")
+                     "or the input's farther than D from them, D relative to the largest side of its bounding "
+                     "box (default 0: no bound)")
       ->check(CLI::NonNegativeNumber);
   command.add_option("--method", o->method,
                      "bodt: every vertex moves (default); odt: interior vertices only; flips: no vertex moves, "

@@ -232,8 +232,10 @@ TEST_P(Smoothing, TwentyIterationsKeepValidityVolumeFeaturesAndQuality)
   EXPECT_LE(after.tets_below_small, before.tets_below_small);
 }
 
-// max_boundary_distance: every surface vertex of the result, old or inserted, is
-// within the bound of the input's surface (exact distance to its triangles), the
+// max_boundary_distance: every surface vertex of the result, old or inserted, and
+// every point of a fine sample of its surface triangles, is within the bound of
+// the input's surface (exact distance to its triangles), and the input's surface
+// (the same sample) within the bound of the result's, the
 // volumes, validity and quality are kept, the surface moves less than without the
 // bound, and the result is the same on one and two threads.
 TEST_P(Smoothing, MaxBoundaryDistanceKeepsTheSurfaceVerticesNearTheInput)
@@ -273,6 +275,17 @@ TEST_P(Smoothing, MaxBoundaryDistanceKeepsTheSurfaceVerticesNearTheInput)
       }
   ASSERT_GT(surface_vertices, 0u);
   EXPECT_LE(farthest, bound * L * (1 + 1e-9));
+  // And between them: points of every surface triangle, 45 per triangle; and the
+  // other way, the input's surface near the result's.
+  const std::vector<K::Triangle_3> result = BODT::boundary_triangles(bounded);
+  for(const K::Point_3& q : CGAL::BODT_3::internal::grid_points(result, 8))
+    farthest = (std::max)(farthest, std::sqrt(tree.squared_distance(q)));
+  EXPECT_LE(farthest, bound * L * (1 + 1e-9));
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> result_tree(result.begin(), result.end());
+  double farthest_input = 0;
+  for(const K::Point_3& q : CGAL::BODT_3::internal::grid_points(surface, 8))
+    farthest_input = (std::max)(farthest_input, std::sqrt(result_tree.squared_distance(q)));
+  EXPECT_LE(farthest_input, bound * L * (1 + 1e-9));
 
   const double with_bound = BODT::relative_hausdorff_distance(surface, BODT::boundary_triangles(bounded));
   const double without = BODT::relative_hausdorff_distance(surface, BODT::boundary_triangles(free));

@@ -10,6 +10,7 @@
 
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
 #include <CGAL/BODT_3/internal/Utilities/Candidate_queue.h>
+#include <CGAL/BODT_3/internal/Utilities/Convex_polygon_2.h>
 #include <CGAL/BODT_3/internal/Utilities/Handle_index_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Id_tuple_map.h>
 #include <CGAL/BODT_3/internal/Utilities/Index_shift.h>
@@ -50,6 +51,43 @@ TEST(HandleIndexMap, FindsWhatWasInsertedThroughGrowth)
 // Arrays whose pages are first written on several threads: above the size where
 // the pages are touched (4 MB), the elements are still what `assign` and `resize`
 // make; a vector that has room keeps its storage (and its elements up to the size).
+// Clipping a triangle: by a half-plane and by a triangle, against areas worked
+// out by hand; the interpolating function takes the corners' values and is
+// affine; a polygon out of the half-plane is empty.
+TEST(ConvexPolygon2, ClipsToTheAreasOfTheIntersections)
+{
+  using P2 = CGAL::BODT_3::internal::Point_2d;
+  namespace I = CGAL::BODT_3::internal;
+  const P2 a{0, 0}, b{2, 0}, c{0, 2};
+  I::Convex_polygon_2 t(a, b, c);
+  EXPECT_DOUBLE_EQ(t.area(), 2);
+  // x <= 1 keeps the triangle but its tip beyond x = 1: 2 - 1/2.
+  I::Convex_polygon_2 left = t;
+  left.clip(I::Affine_2d{-1, 0, 1});
+  EXPECT_EQ(left.size(), 4);
+  EXPECT_DOUBLE_EQ(left.area(), 1.5);
+  // The triangle mirrored through x + y = 2 meets it on its hypotenuse only.
+  I::Convex_polygon_2 touching = t;
+  touching.clip(P2{2, 2}, P2{0, 2}, P2{2, 0});
+  EXPECT_NEAR(touching.area(), 0, 1e-15);
+  // The same shifted by (-1, -1) overlaps it in the square [0, 1]^2.
+  I::Convex_polygon_2 square = t;
+  square.clip(P2{1, 1}, P2{-1, 1}, P2{1, -1});
+  EXPECT_DOUBLE_EQ(square.area(), 1);
+  I::Convex_polygon_2 gone = t;
+  gone.clip(I::Affine_2d{1, 1, -5});
+  EXPECT_TRUE(gone.empty());
+  EXPECT_EQ(gone.area(), 0);
+
+  const std::array<P2, 3> s = {P2{0.3, -1}, P2{2, 0.5}, P2{-0.5, 1.7}};
+  const I::Affine_2d f = I::interpolating(s, {1.5, -2, 0.25});
+  EXPECT_NEAR(f(s[0]), 1.5, 1e-14);
+  EXPECT_NEAR(f(s[1]), -2, 1e-14);
+  EXPECT_NEAR(f(s[2]), 0.25, 1e-14);
+  const P2 m{(s[0][0] + s[1][0] + s[2][0]) / 3, (s[0][1] + s[1][1] + s[2][1]) / 3};
+  EXPECT_NEAR(f(m), (1.5 - 2 + 0.25) / 3, 1e-14);
+}
+
 TEST(FirstTouch, FreshArraysHoldTheirValuesOnAnyNumberOfThreads)
 {
   namespace I = CGAL::BODT_3::internal;

@@ -207,14 +207,13 @@ struct Smoothing_options
   long long max_vertex_removals = -1;
   /// How far the surface (boundary and interfaces) may go from the input's, as a
   /// fraction of the largest side of the bounding box of the input's surface (like
-  /// MMG's -hausd, relative). A move of a surface vertex is refused when the vertex
-  /// would be farther than that from the input's surface, or a sample of its surface
-  /// triangles would, or (in the sweeps and max-min steps) its input position would
-  /// be farther from them (Boundary_distance_guard.h). The vertices are bounded exactly; the triangles
-  /// between samples and the input's surface far from a moved vertex are not, so
-  /// the symmetric Hausdorff distance may exceed the bound (doc/manual.md gives
-  /// measurements). 0: no bound (the default: the bound costs angles and time).
-  /// With B-ODT only (NODT projects onto the input's surface).
+  /// MMG's -hausd, relative). A move of a surface vertex is refused unless its
+  /// surface triangles stay within that distance of the input's surface and the
+  /// input's surface stays within it of the mesh's (Boundary_distance_guard.h):
+  /// the symmetric Hausdorff distance between the two stays within the bound, up
+  /// to rounding, where the surface does not fold within the bound of itself
+  /// (doc/manual.md, section 8). 0: no bound (the default: the bound costs angles
+  /// and time). With B-ODT only (NODT projects onto the input's surface).
   double max_boundary_distance = 0;
   Tensor_voting_options tensor_voting;
 };

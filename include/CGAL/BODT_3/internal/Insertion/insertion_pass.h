@@ -396,9 +396,7 @@ private:
         const Vertex_handle v = order[i];
         const Point p = point(v);
         const auto m = motion_of(v);
-        // The new vertices come first and have no input position.
-        const std::size_t id = i < records_.size() ? std::size_t(-1) : static_cast<std::size_t>(vertex_id_(v));
-        if(smoother_.move(v, m.kind, m.a, m.b, id) && std::find(moved_.begin(), moved_.end(), v) == moved_.end())
+        if(smoother_.move(v, m.kind, m.a, m.b) && std::find(moved_.begin(), moved_.end(), v) == moved_.end())
         {
           moved_.push_back(v);
           was_.push_back(p);

@@ -58,13 +58,9 @@ public:
 
   /// Moves `v` by its move for `kind` (a feature vertex moves along the chord
   /// between `a` and `b`, its neighbours on the curve, or by tensor voting when
-  /// they are unknown). `id`, the vertex's index in the mesh the distance guard
-  /// was made of, checks that its input position stays near its surface triangles
-  /// (none by default). Returns whether it moved.
-  bool move(Vertex_handle v, Vertex_kind kind, Vertex_handle a = Vertex_handle(), Vertex_handle b = Vertex_handle(),
-            std::size_t id = std::size_t(-1))
+  /// they are unknown). Returns whether it moved.
+  bool move(Vertex_handle v, Vertex_kind kind, Vertex_handle a = Vertex_handle(), Vertex_handle b = Vertex_handle())
   {
-    id_ = id;
     if(kind == Vertex_kind::fixed) return false;
     const Tr& tr = adapter_.triangulation();
     all_cells_.clear();
@@ -160,7 +156,7 @@ private:
   // Whether the vertex at p, and its surface triangles, are within the distance bound.
   bool stays_near_surface(const Point& p)
   {
-    return !distance_ || distance_->keeps_near(id_, p, surface_, scratch_);
+    return !distance_ || distance_->keeps_near(star_.x0, p, surface_, scratch_);
   }
 
   // Whether moving the star's vertex to p costs no more than the budget allows
@@ -226,7 +222,6 @@ private:
   double cost_ = 0;   // of the position judged last
   const Boundary_distance_guard<K>* distance_;   // null: no bound on the surface
   std::vector<std::array<Point, 2>> surface_;     // the other vertices of the surface triangles around the vertex
-  std::size_t id_ = std::size_t(-1);             // the moving vertex's, for its input position
   typename Boundary_distance_guard<K>::Scratch scratch_;
 };
 

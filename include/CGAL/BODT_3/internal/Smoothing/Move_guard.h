@@ -258,7 +258,7 @@ private:
     }
     trial.last_refusal = Refusal::worsens_quality;
     if(quality_guard_ && !keeps_quality(v, p, worst ? *worst : worst_around(v), trial)) return false;
-    if(distance_ && !stays_near_surface(v, p, trial))
+    if(distance_ && !stays_near_surface(v, x0, p, trial))
     {
       trial.last_refusal = Refusal::leaves_surface;
       return false;
@@ -306,12 +306,12 @@ private:
 
   // The surface part of `accepts`: a vertex with surface triangles stays, with
   // them, within the distance bound.
-  bool stays_near_surface(int v, const Point& p, Trial& trial) const
+  bool stays_near_surface(int v, const Point& x0, const Point& p, Trial& trial) const
   {
     trial.corners.clear();
     for(int k = surface_begin_[v]; k < surface_begin_[v + 1]; ++k)
       trial.corners.push_back({mesh_.points[surface_facets_[k][0]], mesh_.points[surface_facets_[k][1]]});
-    return distance_->keeps_near(static_cast<std::size_t>(v), p, trial.corners, trial.surface);
+    return distance_->keeps_near(x0, p, trial.corners, trial.surface);
   }
 
   Flat_mesh<K>& mesh_;
