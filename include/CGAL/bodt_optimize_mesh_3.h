@@ -191,9 +191,9 @@ Mesh_optimization_return_code optimize(Mesh& mesh, const Params&... params)
  *     \cgalParamType{`long long`} \cgalParamDefault{-1}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{worst_cell_phase}
- *     \cgalParamDescription{after the last phase, max-min steps and flips at the cells within 5 degrees of
+ *     \cgalParamDescription{after the last phase, max-min steps and flips at the cells within 2 degrees of
  *       the mesh's worst, until an iteration raises neither extreme angle}
- *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{edge_contraction}
  *     \cgalParamDescription{in the last phase, vertices inside a subdomain or on a flat part of the surface

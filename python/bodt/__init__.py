@@ -91,8 +91,8 @@ def smooth(points, tets=None, labels=None, triangles=None, triangle_labels=None,
     topology_optimization (True): flips after each sweep.
     vertex_insertion (True): vertices inserted at spades, caps, slivers and wedges.
     max_vertex_insertions (-1: 5% of the input's vertices): at most this many.
-    worst_cell_phase (False): after the last phase, max-min steps and flips at the
-        cells within 5 degrees of the worst, until the extreme angles stop improving.
+    worst_cell_phase (True): after the last phase, max-min steps and flips at the
+        cells within 2 degrees of the worst, until the extreme angles stop improving.
     ear_splits (False): boundary ears (two boundary faces meeting above the
         largest-angle threshold) split at their inner edge, in the main and the
         largest-angle phases: a lower largest angle on curved Mesh_3 outputs, at

@@ -338,8 +338,8 @@ Command add_smooth(CLI::App& command)
                    "vertex on its opposite edge where that improves the tetrahedra around (default: off; a lower "
                    "largest angle on curved surfaces, sometimes a lower smallest one: doc/manual.md)");
   command.add_flag("--worst-cell-phase,!--no-worst-cell-phase", o->smoothing.worst_cell_phase,
-                   "a final phase raising the worst cells: max-min steps and flips at the tetrahedra within 5 "
-                   "degrees of the worst, until the extreme angles stop improving (default: off)");
+                   "a final phase raising the worst cells: max-min steps and flips at the tetrahedra within 2 "
+                   "degrees of the worst, until the extreme angles stop improving (default: on)");
   command.add_flag("--contraction,!--no-contraction", o->smoothing.edge_contraction,
                    "edge contraction: remove vertices inside a subdomain or on a flat part of the surface where "
                    "that raises the worst tetrahedron around them (default: off)");

@@ -217,8 +217,9 @@ const std::vector<Method>& methods()
        "`bodt_optimize_mesh_3` with its defaults: each iteration a B-ODT sweep, a flip pass, the max-min "
        "fallback at the stars still below its threshold, and vertex insertion at spades, caps, slivers and "
        "wedges (at most 5% vertices added); then the largest-angle phase (the same steps decided by the largest "
-       "dihedral angle, within the extreme angles reached; max-min steps and flips at angles above 120 degrees) and "
-       "a last phase decided by the minimum sine",
+       "dihedral angle, within the extreme angles reached; max-min steps and flips at angles above 120 degrees), "
+       "a last phase decided by the minimum sine, and the worst-cell phase (max-min steps and flips at the cells "
+       "within 2 degrees of the worst, where that is above 28 degrees)",
        [](Mesh& m, std::size_t n) { return smooth_ours(m, n, Ours{}); }},
       {after_perturb_exude_name, Family::ours, Applies_to::mesh_3_output,
        "CGAL's `perturb_mesh_3` + `exude_mesh_3` as `make_mesh_3` runs them by default, then "

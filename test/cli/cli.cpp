@@ -425,17 +425,17 @@ std::string progress_text(bool quiet, std::size_t iterations, double time_limit,
 
 TEST(Progress, ShowsTotalAndTimeLeftOnlyOnLongRuns)
 {
-  // 1.5 s a sweep: after sweep 3 of at most 60 (20 in each of the three phases),
-  // 57 sweeps or 85.5 s are left at most.
+  // 1.5 s a sweep: after sweep 3 of at most 80 (20 in each of the four phases),
+  // 77 sweeps or 115.5 s are left at most.
   const std::string text = progress_text(false, 20, 0, 1.5, 3);
-  EXPECT_NE(text.find("sweep 3 of at most 60"), std::string::npos) << text;
-  EXPECT_NE(text.find("about 86 s left"), std::string::npos) << text;
+  EXPECT_NE(text.find("sweep 3 of at most 80"), std::string::npos) << text;
+  EXPECT_NE(text.find("about 116 s left"), std::string::npos) << text;
   // The first sweep ended before 1 s had passed: no line for it.
   EXPECT_EQ(progress_text(false, 20, 0, 0.4, 2), "");
   EXPECT_EQ(progress_text(true, 20, 0, 1.5, 3), "");
   // A time limit bounds the estimate; 0 iterations show the cap.
   EXPECT_NE(progress_text(false, 20, 6.2, 1.5, 3).find("about 2 s left"), std::string::npos);
-  EXPECT_NE(progress_text(false, 0, 0, 1.5, 1).find("until convergence, at most 3000"), std::string::npos);
+  EXPECT_NE(progress_text(false, 0, 0, 1.5, 1).find("until convergence, at most 4000"), std::string::npos);
 }
 
 // Issue 30: two grids that share only an edge, or only a vertex, cannot form a

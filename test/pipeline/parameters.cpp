@@ -67,7 +67,7 @@ TEST(Parameters, ChainSetsEveryOption)
                      .max_vertex_insertions(12)
                      .edge_contraction(true)
                      .max_vertex_removals(9)
-                     .worst_cell_phase(true)
+                     .worst_cell_phase(false)
                      .max_min_threshold(0.25)
                      .smoothing_method(BODT::Smoothing_method::NODT)
                      .feature_edge_ratio(0.2)
@@ -86,7 +86,7 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_EQ(o.max_vertex_insertions, 12);
   EXPECT_TRUE(o.edge_contraction);
   EXPECT_EQ(o.max_vertex_removals, 9);
-  EXPECT_TRUE(o.worst_cell_phase);
+  EXPECT_FALSE(o.worst_cell_phase);
   EXPECT_EQ(o.max_min_threshold, 0.25);
   EXPECT_EQ(o.smoothing_method, BODT::Smoothing_method::NODT);
   EXPECT_EQ(o.tensor_voting.edge_ratio, 0.2);
@@ -99,7 +99,7 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_EQ(d.max_vertex_insertions, -1);
   EXPECT_FALSE(d.edge_contraction);
   EXPECT_EQ(d.max_vertex_removals, -1);
-  EXPECT_FALSE(d.worst_cell_phase);
+  EXPECT_TRUE(d.worst_cell_phase);
   EXPECT_EQ(d.max_min_threshold, defaults.max_min_threshold);
   EXPECT_EQ(d.smoothing_method, BODT::Smoothing_method::BODT);
   EXPECT_EQ(d.max_iteration_number, defaults.max_iteration_number);

@@ -169,16 +169,19 @@ struct Smoothing_options
   /// degrees above the mesh's worst (its smallest angle, or 180 degrees minus its
   /// largest) take the max-min steps and the flips (and the contractions, with
   /// `edge_contraction`), without sweeps; it ends when an iteration raises
-  /// neither extreme angle. The phases before stop at fixed thresholds (the flips
+  /// neither extreme angle, and does not start where that threshold would not be
+  /// above the last phase's (the worst cell below 28 degrees, with the
+  /// defaults): there the last phase's steps already worked. The phases before stop at fixed thresholds (the flips
   /// and the last max-min steps at 30 degrees), so nothing else raises a worst
-  /// cell above them. Off by default: measured in doc/manual.md, it raised the
-  /// smallest angle of meshes above 30 degrees by 1 to 6 degrees, but on the hard
-  /// benchmark grids it took three to four times the whole run's time.
-  bool worst_cell_phase = false;
-  /// In degrees. Chosen by measurement (doc/manual.md, section 8, item 7): 3, 5,
-  /// 10 and 20 were tried on CGAL's sphere and a 30^3 grid; 10 and 20 raised the
-  /// grid's smallest angle more, at up to seven times the run's time.
-  double worst_cell_margin = 5;
+  /// cell above them. Measured in doc/manual.md (section 8, item 7): it raised the
+  /// smallest angle of the meshes the phases before leave above 30 degrees by 2.7
+  /// to 10.7 degrees, for a few percent of the run's time on the hard grids, and
+  /// changed nothing where the worst cell lies on a curved surface.
+  bool worst_cell_phase = true;
+  /// In degrees. Chosen by measurement (doc/manual.md, section 8, item 7): 1, 2,
+  /// 3 and 5 on two hard grids, CGAL's sphere, the hand and the bunny; 2 raised the
+  /// smallest angle as much as 5 for a tenth of its time on the grids.
+  double worst_cell_margin = 2;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
   /// In the main and the largest-angle phases (with `vertex_insertion`), boundary ears are split:

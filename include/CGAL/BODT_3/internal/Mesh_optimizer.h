@@ -243,8 +243,9 @@ private:
   // The steps of an iteration.
 
   // Before iteration k of a phase that follows the worst cell: its thresholds
-  // from the mesh's extreme angles now; false when the iteration before raised
-  // neither (the phase ends).
+  // from the mesh's extreme angles now; false (the phase ends) when the
+  // iteration before raised neither, or when the thresholds would not be above
+  // the last phase's.
   bool follow_worst(std::size_t k)
   {
     const Dihedral_bounds now = extreme_angles();
@@ -255,8 +256,12 @@ private:
     worst_largest_ = largest;
     const double worst = std::min(smallest, 180 - largest);
     Smoothing_options& opt = phase_options_;
-    opt.max_min_threshold = dihedral_sine(std::min(90.0, worst + opt.worst_cell_margin));
-    opt.flips.quality_threshold = std::max(options_.flips.quality_threshold, opt.max_min_threshold);
+    const double threshold = dihedral_sine(std::min(90.0, worst + opt.worst_cell_margin));
+    // Below the last phase's own thresholds, its flips and max-min steps already
+    // worked on these cells, and without sweeps this phase would repeat them.
+    if(threshold <= std::max(options_.max_min_threshold, options_.flips.quality_threshold)) return false;
+    opt.max_min_threshold = threshold;
+    opt.flips.quality_threshold = threshold;
     return true;
   }
 
