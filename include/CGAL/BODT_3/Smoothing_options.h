@@ -175,7 +175,7 @@ struct Smoothing_options
   /// and the last max-min steps at 30 degrees), so nothing else raises a worst
   /// cell above them. Measured in doc/manual.md (section 8, item 7): it raised the
   /// smallest angle of the meshes the phases before leave above 30 degrees by 2.7
-  /// to 10.7 degrees, for a few percent of the run's time on the hard grids, and
+  /// to 10.7 degrees, for 1% to 17% more time on the hard grids, and
   /// changed nothing where the worst cell lies on a curved surface.
   bool worst_cell_phase = true;
   /// In degrees. Chosen by measurement (doc/manual.md, section 8, item 7): 1, 2,
