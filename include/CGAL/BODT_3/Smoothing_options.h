@@ -171,16 +171,16 @@ struct Smoothing_options
   /// `edge_contraction`), without sweeps; it ends when an iteration raises
   /// neither extreme angle, and does not start where that threshold would not be
   /// above the last phase's (the worst cell below 28 degrees, with the
-  /// defaults): there the last phase's steps already worked. The phases before stop at fixed thresholds (the flips
-  /// and the last max-min steps at 30 degrees), so nothing else raises a worst
-  /// cell above them. Measured in doc/manual.md (section 8, item 7): it raised the
+  /// defaults): there the last phase's steps already worked. The phases before
+  /// stop at fixed thresholds (the flips and the last max-min steps at 30
+  /// degrees), so nothing else raises a worst cell above them. Measured in doc/manual.md (section 8, item 7): it raised the
   /// smallest angle of the meshes the phases before leave above 30 degrees by 2.7
   /// to 10.7 degrees, for 1% to 17% more time on the hard grids, and
   /// changed nothing where the worst cell lies on a curved surface.
   bool worst_cell_phase = true;
   /// In degrees. Chosen by measurement (doc/manual.md, section 8, item 7): 1, 2,
   /// 3 and 5 on two hard grids, CGAL's sphere, the hand and the bunny; 2 raised the
-  /// smallest angle as much as 5 for a tenth of its time on the grids.
+  /// smallest angle as much as 5 for a small part of its time on the grids.
   double worst_cell_margin = 2;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;

@@ -65,6 +65,16 @@ struct Phase
   bool follows_worst = false;
 };
 
+/// The last phase's max-min threshold: at every cell the flip pass works on, not
+/// only the worst ones, by the minimum sine (the largest-angle phase before it
+/// pressed many cells down to the smallest angle it started from).
+inline double last_phase_max_min_threshold(const Smoothing_options& opt)
+{
+  if(opt.max_min_threshold > 0 && opt.quality_measure == Quality_measure::min_dihedral_sine)
+    return std::max(opt.max_min_threshold, opt.flips.quality_threshold);
+  return opt.max_min_threshold;
+}
+
 /// The phases of a run with options `opt`: the main phase, decided by
 /// `quality_measure`; then, with `largest_angle_phase` (not for NODT, the paper's
 /// baseline, whose projection would then aim at the boundary the phase starts
@@ -100,10 +110,7 @@ inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
 
   Smoothing_options last = opt;
   last.vertex_insertion = false;
-  // Max-min steps at every cell the flip pass works on, not only the worst ones:
-  // the phase before pressed many cells down to the smallest angle it started from.
-  if(last.max_min_threshold > 0 && last.quality_measure == Quality_measure::min_dihedral_sine)
-    last.max_min_threshold = std::max(last.max_min_threshold, last.flips.quality_threshold);
+  last.max_min_threshold = last_phase_max_min_threshold(opt);
   phases.push_back({2, last});
 
   if(opt.worst_cell_phase && opt.quality_measure == Quality_measure::min_dihedral_sine && opt.quality_guard &&
@@ -259,7 +266,7 @@ private:
     const double threshold = dihedral_sine(std::min(90.0, worst + opt.worst_cell_margin));
     // Below the last phase's own thresholds, its flips and max-min steps already
     // worked on these cells, and without sweeps this phase would repeat them.
-    if(threshold <= std::max(options_.max_min_threshold, options_.flips.quality_threshold)) return false;
+    if(threshold <= last_phase_max_min_threshold(options_)) return false;
     opt.max_min_threshold = threshold;
     opt.flips.quality_threshold = threshold;
     return true;
