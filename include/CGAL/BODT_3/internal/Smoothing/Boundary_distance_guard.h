@@ -303,7 +303,7 @@ public:
       if(!box.meets(Box_2::of(c[0].at, c[1].at, c[2].at))) continue;
       // Its projection's area over its own is the cosine of the angle of the normals.
       const double projected = 0.5 * orient_2d(c[0].at, c[1].at, c[2].at);
-      if(projected * projected < 0.25 * CGAL::to_double(t.squared_area())) continue;
+      if(!within_60_degrees(projected * projected, CGAL::to_double(t.squared_area()))) continue;
       const int side = projected > 0 ? 0 : 1;
       if(side == 1) std::swap(c[1], c[2]);
       Convex_polygon_2 part(s0, s1, s2);
@@ -348,13 +348,20 @@ private:
     }
   };
 
+  // Whether two planes are within 60 degrees of each other, by the squared area
+  // of a triangle of one projected on the other and its own: the ratio of the
+  // areas is the cosine of the angle, at least a half.
+  static bool within_60_degrees(double squared_projected, double squared_area)
+  {
+    return squared_projected >= 0.25 * squared_area;
+  }
+
   // Whether the triangle (x, a, b), of twice the area `size`, faces the way of
-  // the input triangle in whose plane its corners are given, within 60 degrees:
-  // its projection's area is at least half its own.
+  // the input triangle in whose plane its corners are given, within 60 degrees.
   static bool facing(const Corner_2& x, const Corner_2& a, const Corner_2& b, double size)
   {
     const double projected = orient_2d(x.at, a.at, b.at);
-    return projected > 0 && projected >= 0.5 * size;
+    return projected > 0 && within_60_degrees(projected * projected, size * size);
   }
 
   // Clips `part` (in an input triangle's plane) to the projection of the
@@ -387,12 +394,18 @@ private:
   {
     if(projection_covers(p, a, b, near_)) return true;
     const double b2 = bound_ * bound_;
+    // The corners within the bound of one input triangle; else each corner's nearest.
+    double least[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                       std::numeric_limits<double>::infinity()};
     for(const auto& id : near_)
-      if(CGAL::to_double(CGAL::squared_distance(p, *id)) <= b2 && CGAL::to_double(CGAL::squared_distance(a, *id)) <= b2 &&
-         CGAL::to_double(CGAL::squared_distance(b, *id)) <= b2)
-        return true;
-    if(squared_distance_to(p, near_) > b2 || squared_distance_to(a, near_) > b2 || squared_distance_to(b, near_) > b2)
-      return false;
+    {
+      const double d[3] = {CGAL::to_double(CGAL::squared_distance(p, *id)),
+                           CGAL::to_double(CGAL::squared_distance(a, *id)),
+                           CGAL::to_double(CGAL::squared_distance(b, *id))};
+      if(d[0] <= b2 && d[1] <= b2 && d[2] <= b2) return true;
+      for(int k = 0; k < 3; ++k) least[k] = (std::min)(least[k], d[k]);
+    }
+    if(least[0] > b2 || least[1] > b2 || least[2] > b2) return false;
     const Point g = CGAL::centroid(p, a, b);
     const double reach = std::sqrt((std::max)({CGAL::to_double(CGAL::squared_distance(g, p)),
                                                CGAL::to_double(CGAL::squared_distance(g, a)),
