@@ -139,7 +139,9 @@ def quality(points, tets=None, labels=None, **options):
     output of `bodt quality --json`: num_vertices, num_tets, min_dihedral_deg,
     max_dihedral_deg, the tetrahedra with an angle below small_angle and above
     large_angle (tets_below_10deg, tets_above_170deg by default), bad_tets by where
-    they are, min_radius_ratio, mean_radius_ratio, volume, volume_per_subdomain,
+    they are, min_boundary_triangle_angle_deg (the smallest angle of a boundary or
+    interface triangle; None without one), min_radius_ratio, mean_radius_ratio,
+    volume, volume_per_subdomain,
     inverted_tets and the histogram of all six angles of every tetrahedron.
 
     Options: bins (36): histogram bins over [0, 180] degrees; small_angle (10) and

@@ -137,6 +137,9 @@ void print_table(const BODT::Quality_report& before, const BODT::Quality_report&
   std::printf("%-28s %12s %12s\n", "", "before", "after");
   std::printf("%-28s %12.2f %12.2f\n", "min dihedral (deg)", before.min_dihedral_deg, after.min_dihedral_deg);
   std::printf("%-28s %12.2f %12.2f\n", "max dihedral (deg)", before.max_dihedral_deg, after.max_dihedral_deg);
+  if(before.min_boundary_triangle_angle_deg >= 0 && after.min_boundary_triangle_angle_deg >= 0)
+    std::printf("%-28s %12.2f %12.2f\n", "min boundary triangle (deg)", before.min_boundary_triangle_angle_deg,
+                after.min_boundary_triangle_angle_deg);
   std::printf("%-28s %12zu %12zu\n", "tets below 10 deg", before.tets_below_small, after.tets_below_small);
   std::printf("%-28s %12zu %12zu\n", "tets above 170 deg", before.tets_above_large, after.tets_above_large);
   std::printf("%-28s %12zu %12zu\n", "bad tets: interior", before.bad_tets_interior, after.bad_tets_interior);

@@ -150,6 +150,9 @@ inline std::string html_report(const std::string& title, const Quality_report& b
   row("tetrahedra", report_count(before.num_tets), report_count(after.num_tets));
   row("min dihedral angle (&deg;)", angle(before.min_dihedral_deg), angle(after.min_dihedral_deg));
   row("max dihedral angle (&deg;)", angle(before.max_dihedral_deg), angle(after.max_dihedral_deg));
+  if(before.min_boundary_triangle_angle_deg >= 0 && after.min_boundary_triangle_angle_deg >= 0)
+    row("smallest angle of a boundary or interface triangle (&deg;)", angle(before.min_boundary_triangle_angle_deg),
+        angle(after.min_boundary_triangle_angle_deg));
   row("tets with an angle below " + report_format("%g", before.options.small_angle) + "&deg;",
       report_count(before.tets_below_small), report_count(after.tets_below_small));
   row("tets with an angle above " + report_format("%g", before.options.large_angle) + "&deg;",

@@ -48,6 +48,9 @@ inline void to_json(nlohmann::json& j, const Quality_report& r)
                       {{"interior", r.bad_tets_interior},
                        {"touching_boundary", r.bad_tets_touching_boundary},
                        {"all_vertices_on_boundary", r.bad_tets_all_vertices_on_boundary}}},
+                     {"min_boundary_triangle_angle_deg", r.min_boundary_triangle_angle_deg >= 0
+                                                             ? nlohmann::json(r.min_boundary_triangle_angle_deg)
+                                                             : nlohmann::json(nullptr)},
                      {"min_radius_ratio", r.min_radius_ratio},
                      {"mean_radius_ratio", r.mean_radius_ratio},
                      {"volume", r.volume},

@@ -336,6 +336,11 @@ TEST(C3t3Conversion, TwoSubdomainsKeepBothLabelsAndTheirVolumes)
   EXPECT_GT(interface, 0u);
   const auto v0 = BODT::mesh_quality(input.c3t3).volume_per_subdomain;
   const auto v1 = BODT::mesh_quality(c).volume_per_subdomain;
+  // The boundary and the interface, as facets of the complex and as faces between labels.
+  const double smallest = BODT::mesh_quality(input.c3t3).min_boundary_triangle_angle_deg;
+  EXPECT_GT(smallest, 0);
+  EXPECT_NEAR(BODT::mesh_quality(m).min_boundary_triangle_angle_deg, smallest, 1e-9);
+  EXPECT_NEAR(BODT::mesh_quality(c).min_boundary_triangle_angle_deg, smallest, 1e-9);
   ASSERT_EQ(v1.size(), 2u);
   for(const auto& kv : v0)
     EXPECT_NEAR(v1.at(kv.first), kv.second, 1e-12 * kv.second);
@@ -728,6 +733,7 @@ TEST(C3t3Conversion, SharedMeshes)
     const auto q0 = BODT::mesh_quality(m), q1 = BODT::mesh_quality(c);
     EXPECT_EQ(q1.num_tets, q0.num_tets);
     EXPECT_NEAR(q1.volume, q0.volume, 1e-12 * q0.volume);
+    EXPECT_NEAR(q1.min_boundary_triangle_angle_deg, q0.min_boundary_triangle_angle_deg, 1e-9) << path;
     std::cout << "[ c3t3     ] " << path.filename().string() << ": converted, " << tr.number_of_vertices()
               << " vertices, " << c.number_of_cells_in_complex() << " cells, " << c.number_of_facets_in_complex()
               << " facets, " << c.number_of_edges_in_complex() << " curve edges, "

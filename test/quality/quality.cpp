@@ -209,7 +209,58 @@ TEST(MeshQuality, JsonHasTheDocumentedKeys)
   EXPECT_EQ(j.at("bad_tets").at("interior"), 0);
   EXPECT_DOUBLE_EQ(j.at("min_dihedral_deg").get<double>(), r.min_dihedral_deg);
   EXPECT_DOUBLE_EQ(j.at("volume").get<double>(), r.volume);
+  EXPECT_DOUBLE_EQ(j.at("min_boundary_triangle_angle_deg").get<double>(), 45);
   EXPECT_EQ(j.at("histogram").at("counts").size(), r.histogram.size());
+}
+
+// The smallest angle of the boundary and interface triangles, against the law of
+// cosines on the faces known to be there: a tetrahedron's four faces; two
+// tetrahedra sharing a thin face, which counts only between different labels;
+// the convex hull of a Delaunay triangulation, measured as a triangulation and as
+// a Tet_mesh of one label.
+TEST(MeshQuality, SmallestBoundaryTriangleAngle)
+{
+  auto by_cosines = [](const Point& a, const Point& b, const Point& c) {
+    const double x = std::sqrt(CGAL::squared_distance(b, c)), y = std::sqrt(CGAL::squared_distance(c, a)),
+                 z = std::sqrt(CGAL::squared_distance(a, b));
+    const double A = std::acos((y * y + z * z - x * x) / (2 * y * z));
+    const double B = std::acos((z * z + x * x - y * y) / (2 * z * x));
+    return std::min({A, B, kPi - A - B}) * 180 / kPi;
+  };
+  const auto single = BODT::mesh_quality(one_tet(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)));
+  EXPECT_NEAR(single.min_boundary_triangle_angle_deg, 45, 1e-12);
+
+  Tet_mesh m;
+  m.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 0.05, 0), Point(0.4, 0.3, 1), Point(0.6, 0.2, -1)};
+  m.vertex_refs.assign(5, 0);
+  m.tets = {{0, 1, 2, 3}, {0, 2, 1, 4}};
+  const std::array<std::array<int, 3>, 6> outer = {{{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {2, 1, 4}, {0, 1, 4}, {0, 2, 4}}};
+  double expected = 180;
+  for(const auto& f : outer) expected = std::min(expected, by_cosines(m.points[f[0]], m.points[f[1]], m.points[f[2]]));
+  const double thin = by_cosines(m.points[0], m.points[1], m.points[2]);
+  ASSERT_LT(thin, expected);
+  m.tet_labels = {1, 1};
+  EXPECT_NEAR(BODT::mesh_quality(m).min_boundary_triangle_angle_deg, expected, 1e-9);
+  m.tet_labels = {1, 2};
+  EXPECT_NEAR(BODT::mesh_quality(m).min_boundary_triangle_angle_deg, thin, 1e-9);
+
+  const Delaunay_cells d(300);
+  const CGAL::Delaunay_triangulation_3<CGAL::Epick> dt(d.points.begin(), d.points.end());
+  double hull = 180;
+  for(auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
+  {
+    if(!dt.is_infinite(c)) continue;
+    const int i = c->index(dt.infinite_vertex());
+    hull = std::min(hull, by_cosines(c->vertex((i + 1) % 4)->point(), c->vertex((i + 2) % 4)->point(),
+                                     c->vertex((i + 3) % 4)->point()));
+  }
+  EXPECT_NEAR(BODT::mesh_quality(dt).min_boundary_triangle_angle_deg, hull, 1e-9);
+  Tet_mesh cells;
+  cells.points = d.points;
+  cells.vertex_refs.assign(d.points.size(), 0);
+  cells.tets = d.cells;
+  cells.tet_labels.assign(d.cells.size(), 1);
+  EXPECT_NEAR(BODT::mesh_quality(cells).min_boundary_triangle_angle_deg, hull, 1e-9);
 }
 
 // A value that is not finite is written as null, so the text stays JSON.

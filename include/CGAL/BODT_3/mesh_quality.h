@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 #include <limits>
@@ -58,9 +59,34 @@ struct Quality_report
   double volume = 0;
   std::map<int, double> volume_per_subdomain;
   std::size_t inverted_tets = 0;
+  /// The smallest angle of the triangles on the boundary and the interfaces
+  /// (what a surface mesher's facet angle bounds); -1 when there are none.
+  double min_boundary_triangle_angle_deg = -1;
   std::vector<std::size_t> histogram;   // counts of all six angles of each tetrahedron
   Quality_options options;
 };
+
+namespace internal {
+
+/// The smallest angle of triangle (a, b, c) in degrees: the angle opposite its
+/// shortest side, from atan2 of the cross and dot products (accurate when small);
+/// 0 for a triangle with a repeated corner.
+template <class Point>
+double smallest_triangle_angle(const Point& a, const Point& b, const Point& c)
+{
+  const Point* p[3] = {&a, &b, &c};
+  // Side k is opposite corner k.
+  const double side[3] = {CGAL::to_double(CGAL::squared_distance(b, c)), CGAL::to_double(CGAL::squared_distance(c, a)),
+                          CGAL::to_double(CGAL::squared_distance(a, b))};
+  const int k = static_cast<int>(std::min_element(side, side + 3) - side);
+  const auto u = *p[(k + 1) % 3] - *p[k], v = *p[(k + 2) % 3] - *p[k];
+  const auto n = CGAL::cross_product(u, v);
+  const double cross = std::sqrt(CGAL::to_double(n * n)), dot = CGAL::to_double(u * v);
+  if(!(cross > 0) && !(dot != 0)) return 0;
+  return std::atan2(cross, dot) * 180 / pi;
+}
+
+} // namespace internal
 
 /// Accumulates a `Quality_report` one tetrahedron at a time.
 class Quality_accumulator
@@ -160,6 +186,7 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
   // share it; each vertex looks at the faces around it (in parallel).
   std::vector<char> on_boundary(mesh.points.size(), 0);
   internal::Thread_workers<char> workers(opt.threads);
+  double smallest_triangle = -1;
   {
     std::vector<std::array<int, 4>> some;   // a copy only when some tetrahedra are not measured
     if(measured.size() < mesh.tets.size())
@@ -183,6 +210,26 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
         }
       }
     }, 1024);
+    // The faces no mesh tetrahedron of the same label shares; the smallest of
+    // each block's angles, then of the blocks (a minimum: no order to keep).
+    std::vector<double> block_smallest(static_cast<std::size_t>(internal::block_count(cells.size())), 181);
+    workers.for_blocks(cells.size(), [&](char&, int b, std::size_t begin, std::size_t end) {
+      double& least = block_smallest[static_cast<std::size_t>(b)];
+      for(std::size_t c = begin; c < end; ++c)
+        for(int i = 0; i < 4; ++i)
+        {
+          const int m = faces.match[4 * c + static_cast<std::size_t>(i)];
+          if(m >= 0 && mesh.tet_labels[measured[static_cast<std::size_t>(m / 4)]] == mesh.tet_labels[measured[c]])
+            continue;
+          std::array<std::size_t, 3> f;
+          for(int k = 0, l = 0; k < 4; ++k)
+            if(k != i) f[static_cast<std::size_t>(l++)] = static_cast<std::size_t>(cells[c][k]);
+          least = std::min(least, internal::smallest_triangle_angle(mesh.points[f[0]], mesh.points[f[1]],
+                                                                    mesh.points[f[2]]));
+        }
+    });
+    for(double least : block_smallest)
+      if(least <= 180) smallest_triangle = smallest_triangle < 0 ? least : std::min(smallest_triangle, least);
   }
   // Blocks of a fixed size, merged in order: the sums do not depend on the threads.
   std::vector<Quality_accumulator> parts(static_cast<std::size_t>(internal::block_count(measured.size())),
@@ -199,7 +246,9 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
   });
   Quality_accumulator acc(opt);
   for(const Quality_accumulator& part : parts) acc.merge(part);
-  return acc.result(static_cast<std::size_t>(std::count(used.begin(), used.end(), 1)));
+  Quality_report r = acc.result(static_cast<std::size_t>(std::count(used.begin(), used.end(), 1)));
+  r.min_boundary_triangle_angle_deg = smallest_triangle;
+  return r;
 }
 
 namespace internal {
@@ -217,9 +266,17 @@ mesh_quality(const C3T3& c3t3, const Quality_options& opt = Quality_options())
   auto cp = tr.geom_traits().construct_point_3_object();
   Quality_accumulator acc(opt);
   std::vector<typename C3T3::Vertex_handle> used, on_boundary;
+  double smallest_triangle = -1;
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
     for(int i = 0; i < 4; ++i)
       if(i != f->second) on_boundary.push_back(f->first->vertex(i));
+    const int i = f->second;
+    const double a = internal::smallest_triangle_angle(cp(f->first->vertex((i + 1) % 4)->point()),
+                                                       cp(f->first->vertex((i + 2) % 4)->point()),
+                                                       cp(f->first->vertex((i + 3) % 4)->point()));
+    smallest_triangle = smallest_triangle < 0 ? a : std::min(smallest_triangle, a);
+  }
   std::sort(on_boundary.begin(), on_boundary.end());
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
   {
@@ -230,7 +287,9 @@ mesh_quality(const C3T3& c3t3, const Quality_options& opt = Quality_options())
     for(int i = 0; i < 4; ++i) used.push_back(c->vertex(i));
   }
   std::sort(used.begin(), used.end());
-  return acc.result(static_cast<std::size_t>(std::unique(used.begin(), used.end()) - used.begin()));
+  Quality_report r = acc.result(static_cast<std::size_t>(std::unique(used.begin(), used.end()) - used.begin()));
+  r.min_boundary_triangle_angle_deg = smallest_triangle;
+  return r;
 }
 
 /// Quality of a `Triangulation_3`: its finite cells, all in subdomain 1.
@@ -250,7 +309,19 @@ mesh_quality(const Tr& tr, const Quality_options& opt = Quality_options())
     acc.add(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
             cp(c->vertex(3)->point()), 1, nb);
   }
-  return acc.result(tr.number_of_vertices());
+  Quality_report r = acc.result(tr.number_of_vertices());
+  // The boundary is the convex hull: the finite faces of the infinite cells.
+  for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
+  {
+    if(!tr.is_infinite(c)) continue;
+    const int i = c->index(tr.infinite_vertex());
+    const double a = internal::smallest_triangle_angle(cp(c->vertex((i + 1) % 4)->point()),
+                                                       cp(c->vertex((i + 2) % 4)->point()),
+                                                       cp(c->vertex((i + 3) % 4)->point()));
+    double& least = r.min_boundary_triangle_angle_deg;
+    least = least < 0 ? a : std::min(least, a);
+  }
+  return r;
 }
 
 // The report as JSON: src/report/json_report.h (the tools', not the package's).
@@ -268,6 +339,12 @@ inline void print_report(std::ostream& out, const Quality_report& r)
                 r.options.small_angle, r.tets_above_large, r.options.large_angle, r.min_radius_ratio,
                 r.mean_radius_ratio, r.volume, r.inverted_tets);
   out << buf;
+  if(r.min_boundary_triangle_angle_deg >= 0)
+  {
+    std::snprintf(buf, sizeof buf, "boundary and interface triangles: smallest angle %.2f deg\n",
+                  r.min_boundary_triangle_angle_deg);
+    out << buf;
+  }
   if(r.volume_per_subdomain.size() > 1)
   {
     out << "volume per subdomain:";
