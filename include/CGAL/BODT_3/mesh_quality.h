@@ -69,8 +69,8 @@ struct Quality_report
 namespace internal {
 
 /// The smallest angle of triangle (a, b, c) in degrees: the angle opposite its
-/// shortest side, from atan2 of the cross and dot products (accurate when small);
-/// 0 for a triangle with a repeated corner.
+/// shortest side, from atan2 of the cross and dot products (accurate when small;
+/// 0 for a flat triangle).
 template <class Point>
 double smallest_triangle_angle(const Point& a, const Point& b, const Point& c)
 {
@@ -82,7 +82,6 @@ double smallest_triangle_angle(const Point& a, const Point& b, const Point& c)
   const auto u = *p[(k + 1) % 3] - *p[k], v = *p[(k + 2) % 3] - *p[k];
   const auto n = CGAL::cross_product(u, v);
   const double cross = std::sqrt(CGAL::to_double(n * n)), dot = CGAL::to_double(u * v);
-  if(!(cross > 0) && !(dot != 0)) return 0;
   return std::atan2(cross, dot) * 180 / pi;
 }
 
