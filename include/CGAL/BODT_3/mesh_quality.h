@@ -85,6 +85,10 @@ double smallest_triangle_angle(const Point& a, const Point& b, const Point& c)
   return std::atan2(cross, dot) * 180 / pi;
 }
 
+// Above any angle: no boundary triangle seen yet; reported as -1.
+constexpr double no_triangle = 181;
+inline double triangle_angle_or_none(double smallest) { return smallest < no_triangle ? smallest : -1; }
+
 } // namespace internal
 
 /// Accumulates a `Quality_report` one tetrahedron at a time.
@@ -185,13 +189,18 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
   // share it; each vertex looks at the faces around it (in parallel).
   std::vector<char> on_boundary(mesh.points.size(), 0);
   internal::Thread_workers<char> workers(opt.threads);
-  double smallest_triangle = -1;
+  double smallest_triangle = internal::no_triangle;
   {
     std::vector<std::array<int, 4>> some;   // a copy only when some tetrahedra are not measured
     if(measured.size() < mesh.tets.size())
       for(std::size_t t : measured) some.push_back(mesh.tets[t]);
     const auto& cells = measured.size() < mesh.tets.size() ? some : mesh.tets;
     const internal::Tet_face_matching faces(cells, mesh.points.size(), opt.threads);
+    // Whether face i of cell c is shared by a mesh tetrahedron of the same label.
+    auto inner = [&](std::size_t c, int i) {
+      const int m = faces.match[4 * c + static_cast<std::size_t>(i)];
+      return m >= 0 && mesh.tet_labels[measured[static_cast<std::size_t>(m / 4)]] == mesh.tet_labels[measured[c]];
+    };
     workers.for_each(0, static_cast<int>(mesh.points.size()), [&](char&, int v) {
       const int first = faces.vertex_cells_begin[v], last = faces.vertex_cells_begin[v + 1];
       used[static_cast<std::size_t>(v)] = first < last ? 1 : 0;
@@ -200,10 +209,7 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
         const auto c = static_cast<std::size_t>(faces.vertex_cells[k]);
         for(int i = 0; i < 4; ++i)
         {
-          const int m = faces.match[4 * c + static_cast<std::size_t>(i)];
-          if(cells[c][i] == v ||
-             (m >= 0 && mesh.tet_labels[measured[static_cast<std::size_t>(m / 4)]] == mesh.tet_labels[measured[c]]))
-            continue;
+          if(cells[c][i] == v || inner(c, i)) continue;
           on_boundary[static_cast<std::size_t>(v)] = 1;
           break;
         }
@@ -211,15 +217,13 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
     }, 1024);
     // The faces no mesh tetrahedron of the same label shares; the smallest of
     // each block's angles, then of the blocks (a minimum: no order to keep).
-    std::vector<double> block_smallest(static_cast<std::size_t>(internal::block_count(cells.size())), 181);
+    std::vector<double> block_smallest(static_cast<std::size_t>(internal::block_count(cells.size())), internal::no_triangle);
     workers.for_blocks(cells.size(), [&](char&, int b, std::size_t begin, std::size_t end) {
       double& least = block_smallest[static_cast<std::size_t>(b)];
       for(std::size_t c = begin; c < end; ++c)
         for(int i = 0; i < 4; ++i)
         {
-          const int m = faces.match[4 * c + static_cast<std::size_t>(i)];
-          if(m >= 0 && mesh.tet_labels[measured[static_cast<std::size_t>(m / 4)]] == mesh.tet_labels[measured[c]])
-            continue;
+          if(inner(c, i)) continue;
           std::array<std::size_t, 3> f;
           for(int k = 0, l = 0; k < 4; ++k)
             if(k != i) f[static_cast<std::size_t>(l++)] = static_cast<std::size_t>(cells[c][k]);
@@ -227,8 +231,7 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
                                                                     mesh.points[f[2]]));
         }
     });
-    for(double least : block_smallest)
-      if(least <= 180) smallest_triangle = smallest_triangle < 0 ? least : std::min(smallest_triangle, least);
+    for(double least : block_smallest) smallest_triangle = std::min(smallest_triangle, least);
   }
   // Blocks of a fixed size, merged in order: the sums do not depend on the threads.
   std::vector<Quality_accumulator> parts(static_cast<std::size_t>(internal::block_count(measured.size())),
@@ -246,7 +249,7 @@ inline Quality_report mesh_quality(const Tet_mesh& mesh, const Quality_options& 
   Quality_accumulator acc(opt);
   for(const Quality_accumulator& part : parts) acc.merge(part);
   Quality_report r = acc.result(static_cast<std::size_t>(std::count(used.begin(), used.end(), 1)));
-  r.min_boundary_triangle_angle_deg = smallest_triangle;
+  r.min_boundary_triangle_angle_deg = internal::triangle_angle_or_none(smallest_triangle);
   return r;
 }
 
@@ -265,16 +268,16 @@ mesh_quality(const C3T3& c3t3, const Quality_options& opt = Quality_options())
   auto cp = tr.geom_traits().construct_point_3_object();
   Quality_accumulator acc(opt);
   std::vector<typename C3T3::Vertex_handle> used, on_boundary;
-  double smallest_triangle = -1;
+  double smallest_triangle = internal::no_triangle;
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
   {
     for(int i = 0; i < 4; ++i)
       if(i != f->second) on_boundary.push_back(f->first->vertex(i));
     const int i = f->second;
-    const double a = internal::smallest_triangle_angle(cp(f->first->vertex((i + 1) % 4)->point()),
-                                                       cp(f->first->vertex((i + 2) % 4)->point()),
-                                                       cp(f->first->vertex((i + 3) % 4)->point()));
-    smallest_triangle = smallest_triangle < 0 ? a : std::min(smallest_triangle, a);
+    smallest_triangle = std::min(smallest_triangle,
+                                 internal::smallest_triangle_angle(cp(f->first->vertex((i + 1) % 4)->point()),
+                                                                   cp(f->first->vertex((i + 2) % 4)->point()),
+                                                                   cp(f->first->vertex((i + 3) % 4)->point())));
   }
   std::sort(on_boundary.begin(), on_boundary.end());
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
@@ -287,7 +290,7 @@ mesh_quality(const C3T3& c3t3, const Quality_options& opt = Quality_options())
   }
   std::sort(used.begin(), used.end());
   Quality_report r = acc.result(static_cast<std::size_t>(std::unique(used.begin(), used.end()) - used.begin()));
-  r.min_boundary_triangle_angle_deg = smallest_triangle;
+  r.min_boundary_triangle_angle_deg = internal::triangle_angle_or_none(smallest_triangle);
   return r;
 }
 
@@ -310,16 +313,17 @@ mesh_quality(const Tr& tr, const Quality_options& opt = Quality_options())
   }
   Quality_report r = acc.result(tr.number_of_vertices());
   // The boundary is the convex hull: the finite faces of the infinite cells.
+  double smallest_triangle = internal::no_triangle;
   for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
   {
     if(!tr.is_infinite(c)) continue;
     const int i = c->index(tr.infinite_vertex());
-    const double a = internal::smallest_triangle_angle(cp(c->vertex((i + 1) % 4)->point()),
-                                                       cp(c->vertex((i + 2) % 4)->point()),
-                                                       cp(c->vertex((i + 3) % 4)->point()));
-    double& least = r.min_boundary_triangle_angle_deg;
-    least = least < 0 ? a : std::min(least, a);
+    smallest_triangle = std::min(smallest_triangle,
+                                 internal::smallest_triangle_angle(cp(c->vertex((i + 1) % 4)->point()),
+                                                                   cp(c->vertex((i + 2) % 4)->point()),
+                                                                   cp(c->vertex((i + 3) % 4)->point())));
   }
+  r.min_boundary_triangle_angle_deg = internal::triangle_angle_or_none(smallest_triangle);
   return r;
 }
 
