@@ -126,6 +126,7 @@ const std::vector<Option>& smoothing_options()
       {"edge_contraction", [](BODT::Smoothing_options& o, py::handle v) { o.edge_contraction = v.cast<bool>(); }},
       {"worst_cell_phase", [](BODT::Smoothing_options& o, py::handle v) { o.worst_cell_phase = v.cast<bool>(); }},
       {"ear_splits", [](BODT::Smoothing_options& o, py::handle v) { o.ear_splits = v.cast<bool>(); }},
+      {"cavity_insertion", [](BODT::Smoothing_options& o, py::handle v) { o.cavity_insertion = v.cast<bool>(); }},
       {"max_vertex_removals",
        [](BODT::Smoothing_options& o, py::handle v) { o.max_vertex_removals = v.cast<long long>(); }},
       {"max_vertex_insertions",

@@ -7,7 +7,8 @@
 #   scripts/fuzz.sh 600 gmsh vtu       ten minutes each for two harnesses
 #   FUZZ_RUNS=1000000 scripts/fuzz.sh  a number of executions per harness instead of a time
 # Harnesses: medit meshb gmsh vtu vtk tetgen (the readers, with round trips) and smooth
-# (three iterations of the default pipeline on small Medit meshes: finite coordinates,
+# (three iterations of the pipeline on small Medit meshes, with cavity insertion and edge
+# contraction on for half the inputs each: finite coordinates,
 # no inverted tetrahedron added, every subdomain's volume kept to 1e-10, at most 5%
 # vertices added). Exits non-zero
 # when a harness finds a crash, a leak, undefined behaviour or a broken promise; the

@@ -79,6 +79,7 @@ inline void to_json(nlohmann::json& j, const Insertion_stats& s)
                      {"cap_splits", s.cap_splits},
                      {"sliver_splits", s.sliver_splits},
                      {"ear_splits", s.ear_splits},
+                     {"cavity_insertions", s.cavity_insertions},
                      {"undone", s.undone},
                      {"vertices_added", s.vertices_added},
                      {"seconds", s.seconds}};
@@ -169,6 +170,7 @@ inline void to_json(nlohmann::json& j, const Smoothing_options& o)
                      {"topology_optimization", o.topology_optimization},
                      {"vertex_insertion", o.vertex_insertion},
                      {"ear_splits", o.ear_splits},
+                     {"cavity_insertion", o.cavity_insertion},
                      {"max_vertex_insertions", o.max_vertex_insertions},
                      {"edge_contraction", o.edge_contraction},
                      {"worst_cell_phase", o.worst_cell_phase},

@@ -48,6 +48,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const BODT::Quality_report before = BODT::mesh_quality(mesh);
   BODT::Smoothing_options options;
   options.max_iteration_number = 3;
+  // The optional steps too, on half the inputs each (chosen by the input's length).
+  options.cavity_insertion = (size & 1) != 0;
+  options.edge_contraction = (size & 2) != 0;
   try
   {
     BODT::smooth(mesh, options);

@@ -4,9 +4,11 @@
 // with insertion over CGAL-meshed inputs and through a file mesh.
 #include "c3t3_checks.h"
 #include "test_support.h"
+#include "delaunay_cells.h"
 #include "inputs/generated_inputs.h"
 
 #include <CGAL/BODT_3/internal/Insertion/Bad_tet_shape.h>
+#include <CGAL/BODT_3/internal/Insertion/Cavity_insertion.h>
 #include <CGAL/BODT_3/Tet_mesh_conversion.h>
 #include <CGAL/BODT_3/internal/Insertion/Vertex_insertion.h>
 #include <CGAL/BODT_3/mesh_quality.h>
@@ -308,6 +310,115 @@ TEST(Splits, AnInvertingPointIsRefused)
   expect_valid(c3t3);
   EXPECT_EQ(state(c3t3).cells, before.cells);
   EXPECT_EQ(state(c3t3).vertices, before.vertices);
+}
+
+// Insertion in an optimized cavity (Cavity_insertion.h), at the worst cells of a
+// Delaunay triangulation of random points cut into two subdomains by a plane
+// (the file's interface facets between them): each proposal's cavity lies in its
+// cell's subdomain and holds no facet of the complex; every cone over the
+// cavity's boundary is positively oriented (exactly), within the mesh's extreme
+// angles, and the cones' volumes add up to the cavity's (they tile it); the cones
+// compare better, worst first, than the cells they replace. Then the pass
+// inserts them: a valid complex, each subdomain's volume and each patch's area
+// the same, one vertex per insertion, and a better worst cell.
+TEST(CavityInsertion, ConesTileTheCavityWithinItsSubdomainAndRaiseTheWorst)
+{
+  const bodt_test::Delaunay_cells d(400);
+  std::vector<int> labels;
+  for(const auto& c : d.cells)
+  {
+    double x = 0;
+    for(int v : c) x += d.points[static_cast<std::size_t>(v)].x() / 4;
+    labels.push_back(x < 0.5 ? 1 : 2);
+  }
+  File_c3t3 c3t3;
+  BODT::tet_mesh_to_c3t3(make_mesh(d.points, d.cells, labels), c3t3, "test");
+  const State before = state(c3t3);
+  ASSERT_EQ(before.volume.size(), 2u);
+  Adapter adapter(c3t3, false);
+  auto cp = c3t3.triangulation().geom_traits().construct_point_3_object();
+  auto pt = [&](Vertex_handle v) { return cp(v->point()); };
+  BODT::internal::Dihedral_bounds bounds;
+  std::vector<std::pair<double, File_c3t3::Cell_handle>> cells;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    bounds.include(pt(c->vertex(0)), pt(c->vertex(1)), pt(c->vertex(2)), pt(c->vertex(3)));
+    cells.emplace_back(BODT::internal::min_dihedral_sine(pt(c->vertex(0)), pt(c->vertex(1)), pt(c->vertex(2)),
+                                                         pt(c->vertex(3))),
+                       c);
+  }
+  std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  const double worst_before = cells.front().first;
+  BODT::internal::Cavity_insertion<Adapter> cavity(adapter, bounds, BODT::Quality_measure::min_dihedral_sine);
+  int found = 0;
+  for(std::size_t k = 0; k < 30; ++k)
+  {
+    const auto c = cells[k].second;
+    BODT::internal::Cavity_insertion<Adapter>::Proposal p;
+    if(!cavity(c, p)) continue;
+    ++found;
+    double cavity_volume = 0, cones_volume = 0;
+    std::vector<double> cones;
+    for(const auto& x : p.cavity)
+    {
+      EXPECT_EQ(c3t3.subdomain_index(x), c3t3.subdomain_index(c));
+      cavity_volume += CGAL::volume(pt(x->vertex(0)), pt(x->vertex(1)), pt(x->vertex(2)), pt(x->vertex(3)));
+      for(int i = 0; i < 4; ++i)
+      {
+        const bool inner = std::find(p.cavity.begin(), p.cavity.end(), x->neighbor(i)) != p.cavity.end();
+        if(inner)
+        {
+          EXPECT_FALSE(c3t3.is_in_complex(x, i)) << "a facet of the complex inside the cavity";
+          continue;
+        }
+        std::array<Point, 4> q = {pt(x->vertex(0)), pt(x->vertex(1)), pt(x->vertex(2)), pt(x->vertex(3))};
+        q[static_cast<std::size_t>(i)] = p.point;
+        EXPECT_EQ(CGAL::orientation(q[0], q[1], q[2], q[3]), CGAL::POSITIVE);
+        const double sine = BODT::internal::min_dihedral_sine(q[0], q[1], q[2], q[3]);
+        EXPECT_TRUE(bounds.contains(q[0], q[1], q[2], q[3], sine));
+        cones_volume += CGAL::volume(q[0], q[1], q[2], q[3]);
+        cones.push_back(sine);
+      }
+    }
+    EXPECT_NEAR(cones_volume, cavity_volume, 1e-12 * cavity_volume);
+    std::vector<double> after = p.after, old = p.before;
+    std::sort(cones.begin(), cones.end());
+    std::sort(after.begin(), after.end());
+    EXPECT_EQ(cones, after);
+    EXPECT_GT(BODT::internal::compare_worst_first(after, old), 0);
+  }
+  EXPECT_GT(found, 0) << "no cavity found: the checks would not reach it";
+
+  BODT::Insertion_options opt;
+  opt.cavity = true;
+  opt.quality_threshold = 0.5;
+  auto motion = [](Vertex_handle) { return BODT::internal::Vertex_motion<Vertex_handle>{}; };
+  std::map<Vertex_handle, int> ids;
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+    ids.emplace(v, static_cast<int>(ids.size()));
+  auto vertex_id = [&](Vertex_handle v) {
+    const auto it = ids.find(v);
+    return it == ids.end() ? -1 : it->second;
+  };
+  std::vector<BODT::internal::Added_vertex<Vertex_handle>> added;
+  std::vector<Vertex_handle> touched;
+  const auto stats =
+      BODT::internal::insertion_pass(adapter, opt, bounds, BODT::Quality_measure::min_dihedral_sine,
+                                     BODT::Tensor_voting_options(), 100, false, motion, vertex_id, added, touched);
+  EXPECT_GT(stats.cavity_insertions, 0u);
+  EXPECT_EQ(stats.vertices_added, stats.cavity_insertions);
+  expect_valid(c3t3);
+  const State after = state(c3t3);
+  expect_same_volumes(before, after);
+  EXPECT_EQ(after.vertices, before.vertices + stats.cavity_insertions);
+  EXPECT_EQ(after.facets, before.facets);
+  std::vector<double> qualities_before, qualities_after;
+  for(const auto& c : cells) qualities_before.push_back(c.first);
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    qualities_after.push_back(BODT::internal::min_dihedral_sine(pt(c->vertex(0)), pt(c->vertex(1)),
+                                                                pt(c->vertex(2)), pt(c->vertex(3))));
+  EXPECT_GE(*std::min_element(qualities_after.begin(), qualities_after.end()), worst_before);
+  EXPECT_GT(BODT::internal::compare_worst_first(qualities_after, qualities_before), 0);
 }
 
 // The pipeline with insertion over CGAL-meshed inputs: within the budget, every

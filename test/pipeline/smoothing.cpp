@@ -141,6 +141,29 @@ void expect_volumes_and_angles_kept(const BODT::Quality_report& before, const C3
   EXPECT_LE(after.max_dihedral_deg, before.max_dihedral_deg + kAngleSlack);
 }
 
+// Runs `optimize(c3t3, threads)` on copies of `input` with 1, 2 and 4 threads:
+// the same mesh on each; returns the one-thread result.
+template <class Optimize>
+C3t3 on_one_two_and_four_threads(const C3t3& input, const Optimize& optimize)
+{
+  C3t3 first;
+  BODT::Tet_mesh reference;
+  for(int threads : {1, 2, 4})
+  {
+    C3t3 c3t3 = input;
+    optimize(c3t3, threads);
+    const BODT::Tet_mesh m = BODT::c3t3_to_tet_mesh(c3t3);
+    if(threads > 1)
+    {
+      expect_same_mesh(m, reference, threads);
+      continue;
+    }
+    reference = m;
+    first = c3t3;
+  }
+  return first;
+}
+
 } // namespace
 
 TEST_P(Smoothing, TwentyIterationsKeepValidityVolumeFeaturesAndQuality)
@@ -1055,32 +1078,24 @@ TEST(Pipeline, EdgeContractionKeepsVolumesFeaturesCornersOnAnyNumberOfThreads)
     const auto before = BODT::mesh_quality(input.c3t3);
     const auto& tr0 = input.c3t3.triangulation();
     const Feature_census features = feature_census(input.c3t3);
-    BODT::Tet_mesh reference;
-    for(int threads : {1, 2, 4})
-    {
-      C3t3 c3t3 = input.c3t3;
-      std::size_t removed = 0;
-      CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::edge_contraction = true,
+    std::size_t removed = 0;
+    const C3t3 c3t3 = on_one_two_and_four_threads(input.c3t3, [&](C3t3& c, int threads) {
+      std::size_t count = 0;
+      CGAL::bodt_optimize_mesh_3(c, CGAL::parameters::edge_contraction = true,
                                  CGAL::parameters::vertex_insertion = false,
                                  CGAL::parameters::number_of_threads = threads,
-                                 CGAL::parameters::progress_visitor = Removals{&removed});
-      const BODT::Tet_mesh m = BODT::c3t3_to_tet_mesh(c3t3);
-      if(threads > 1)
-      {
-        expect_same_mesh(m, reference, threads);
-        continue;
-      }
-      reference = m;
-      total += removed;
-      const auto& tr = c3t3.triangulation();
-      expect_valid(tr);
-      EXPECT_EQ(tr.number_of_vertices() + removed, tr0.number_of_vertices());
-      EXPECT_LE(removed, tr0.number_of_vertices() / 20);
-      expect_volumes_and_angles_kept(before, c3t3);
-      const Feature_census now = feature_census(c3t3);
-      EXPECT_TRUE(now.corners == features.corners) << "a corner moved, went or came";
-      EXPECT_EQ(now.curve_vertices, features.curve_vertices);
-    }
+                                 CGAL::parameters::progress_visitor = Removals{&count});
+      if(threads == 1) removed = count;
+    });
+    total += removed;
+    const auto& tr = c3t3.triangulation();
+    expect_valid(tr);
+    EXPECT_EQ(tr.number_of_vertices() + removed, tr0.number_of_vertices());
+    EXPECT_LE(removed, tr0.number_of_vertices() / 20);
+    expect_volumes_and_angles_kept(before, c3t3);
+    const Feature_census now = feature_census(c3t3);
+    EXPECT_TRUE(now.corners == features.corners) << "a corner moved, went or came";
+    EXPECT_EQ(now.curve_vertices, features.curve_vertices);
   }
   EXPECT_GT(total, 0u) << "no contraction: the checks would not reach it";
 }
@@ -1135,34 +1150,75 @@ TEST(Pipeline, EarSplitsRemoveEarsAndKeepVolumesFeaturesCornersOnAnyNumberOfThre
     C3t3 plain = input.c3t3;
     CGAL::bodt_optimize_mesh_3(plain);
     ears_without += ears_above(plain, 120.0);
-    BODT::Tet_mesh reference;
-    for(int threads : {1, 2, 4})
-    {
-      C3t3 c3t3 = input.c3t3;
-      std::size_t split = 0;
-      CGAL::bodt_optimize_mesh_3(c3t3, CGAL::parameters::ear_splits = true,
+    std::size_t split = 0;
+    const C3t3 c3t3 = on_one_two_and_four_threads(input.c3t3, [&](C3t3& c, int threads) {
+      std::size_t count = 0;
+      CGAL::bodt_optimize_mesh_3(c, CGAL::parameters::ear_splits = true,
                                  CGAL::parameters::number_of_threads = threads,
-                                 CGAL::parameters::progress_visitor = Ears{&split});
-      const BODT::Tet_mesh m = BODT::c3t3_to_tet_mesh(c3t3);
-      if(threads > 1)
-      {
-        expect_same_mesh(m, reference, threads);
-        continue;
-      }
-      reference = m;
-      total += split;
-      ears_with += ears_above(c3t3, 120.0);
-      const auto& tr = c3t3.triangulation();
-      expect_valid(tr);
-      EXPECT_LE(tr.number_of_vertices(), tr0.number_of_vertices() + tr0.number_of_vertices() / 20 + 1);
-      expect_volumes_and_angles_kept(before, c3t3);
-      const Feature_census now = feature_census(c3t3);
-      EXPECT_TRUE(now.corners == features.corners) << "a corner moved, went or came";
-      EXPECT_GE(now.curve_vertices, features.curve_vertices);
-    }
+                                 CGAL::parameters::progress_visitor = Ears{&count});
+      if(threads == 1) split = count;
+    });
+    total += split;
+    ears_with += ears_above(c3t3, 120.0);
+    const auto& tr = c3t3.triangulation();
+    expect_valid(tr);
+    EXPECT_LE(tr.number_of_vertices(), tr0.number_of_vertices() + tr0.number_of_vertices() / 20 + 1);
+    expect_volumes_and_angles_kept(before, c3t3);
+    const Feature_census now = feature_census(c3t3);
+    EXPECT_TRUE(now.corners == features.corners) << "a corner moved, went or came";
+    EXPECT_GE(now.curve_vertices, features.curve_vertices);
   }
   EXPECT_GT(total, 0u) << "no ear split: the checks would not reach it";
   EXPECT_LT(ears_with, ears_without) << ears_with << " ears above 120 degrees with the splits, " << ears_without << " without";
+}
+
+// Cavity insertion in the worst-cell phase (`cavity_insertion`) on CGAL-meshed
+// inputs with curved surfaces, features, corners and two subdomains: validity,
+// every subdomain's volume, every corner where it was, no feature vertex lost, at
+// most 5% more vertices, the same cells on 1, 2 and 4 threads; and the phase
+// never undoes what the phases before reached (the extreme angles at least those
+// of the run without the worst-cell phase, which ends where that phase starts).
+TEST(Pipeline, CavityInsertionKeepsVolumesFeaturesCornersOnAnyNumberOfThreads)
+{
+  using namespace bodt_inputs;
+  struct Cavities
+  {
+    std::size_t* inserted;
+    void after_classification(const BODT::Smoothing_result&) {}
+    void after_iteration(const BODT::Iteration_stats& s) { *inserted += s.insertion.cavity_insertions; }
+  };
+  std::size_t total = 0;
+  for(Shape shape : {Shape::torus, Shape::genus2, Shape::two_subdomains, Shape::sharp_part})
+  {
+    SCOPED_TRACE(name(shape));
+    const Generated_mesh input = make_input(shape, Size::small);
+    const auto before = BODT::mesh_quality(input.c3t3);
+    const auto& tr0 = input.c3t3.triangulation();
+    const Feature_census features = feature_census(input.c3t3);
+    C3t3 three_phases = input.c3t3;
+    CGAL::bodt_optimize_mesh_3(three_phases, CGAL::parameters::worst_cell_phase = false);
+    const auto reached = BODT::mesh_quality(three_phases);
+    std::size_t inserted = 0;
+    const C3t3 c3t3 = on_one_two_and_four_threads(input.c3t3, [&](C3t3& c, int threads) {
+      std::size_t count = 0;
+      CGAL::bodt_optimize_mesh_3(c, CGAL::parameters::cavity_insertion = true,
+                                 CGAL::parameters::number_of_threads = threads,
+                                 CGAL::parameters::progress_visitor = Cavities{&count});
+      if(threads == 1) inserted = count;
+    });
+    total += inserted;
+    const auto& tr = c3t3.triangulation();
+    expect_valid(tr);
+    EXPECT_LE(tr.number_of_vertices(), tr0.number_of_vertices() + tr0.number_of_vertices() / 20 + 1);
+    expect_volumes_and_angles_kept(before, c3t3);
+    const Feature_census now = feature_census(c3t3);
+    EXPECT_TRUE(now.corners == features.corners) << "a corner moved, went or came";
+    EXPECT_GE(now.curve_vertices, features.curve_vertices);
+    const auto after = BODT::mesh_quality(c3t3);
+    EXPECT_GE(after.min_dihedral_deg, reached.min_dihedral_deg);
+    EXPECT_LE(after.max_dihedral_deg, reached.max_dihedral_deg);
+  }
+  EXPECT_GT(total, 0u) << "no cavity insertion: the checks would not reach it";
 }
 
 // The worst-cell phase on a mesh the phases before leave above their 30-degree

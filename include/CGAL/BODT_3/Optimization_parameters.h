@@ -48,6 +48,7 @@ BOOST_PARAMETER_NAME((max_vertex_insertions_keyword, tag) max_vertex_insertions_
 BOOST_PARAMETER_NAME((edge_contraction_keyword, tag) edge_contraction_)
 BOOST_PARAMETER_NAME((worst_cell_phase_keyword, tag) worst_cell_phase_)
 BOOST_PARAMETER_NAME((ear_splits_keyword, tag) ear_splits_)
+BOOST_PARAMETER_NAME((cavity_insertion_keyword, tag) cavity_insertion_)
 BOOST_PARAMETER_NAME((max_vertex_removals_keyword, tag) max_vertex_removals_)
 BOOST_PARAMETER_NAME((max_min_threshold_keyword, tag) max_min_threshold_)
 BOOST_PARAMETER_NAME((largest_angle_phase_keyword, tag) largest_angle_phase_)
@@ -86,6 +87,7 @@ inline void set_parameter(Smoothing_options& o, tag::max_vertex_insertions_, lon
 inline void set_parameter(Smoothing_options& o, tag::edge_contraction_, bool v) { o.edge_contraction = v; }
 inline void set_parameter(Smoothing_options& o, tag::worst_cell_phase_, bool v) { o.worst_cell_phase = v; }
 inline void set_parameter(Smoothing_options& o, tag::ear_splits_, bool v) { o.ear_splits = v; }
+inline void set_parameter(Smoothing_options& o, tag::cavity_insertion_, bool v) { o.cavity_insertion = v; }
 inline void set_parameter(Smoothing_options& o, tag::max_vertex_removals_, long long v) { o.max_vertex_removals = v; }
 inline void set_parameter(Smoothing_options& o, tag::max_min_threshold_, double v)
 {
@@ -124,6 +126,7 @@ constexpr bool is_known_tag =
     std::is_same<Tag, tag::vertex_insertion_>::value || std::is_same<Tag, tag::max_vertex_insertions_>::value ||
     std::is_same<Tag, tag::edge_contraction_>::value || std::is_same<Tag, tag::max_vertex_removals_>::value ||
     std::is_same<Tag, tag::worst_cell_phase_>::value || std::is_same<Tag, tag::ear_splits_>::value ||
+    std::is_same<Tag, tag::cavity_insertion_>::value ||
     std::is_same<Tag, tag::max_min_threshold_>::value || std::is_same<Tag, tag::number_of_threads_>::value ||
     std::is_same<Tag, tag::largest_angle_phase_>::value || std::is_same<Tag, tag::largest_angle_threshold_>::value ||
     std::is_same<Tag, tag::feature_edge_ratio_>::value || std::is_same<Tag, tag::feature_corner_ratio_>::value ||
@@ -180,6 +183,7 @@ public:
   Optimization_parameters edge_contraction(bool b) const { return with(internal::tag::edge_contraction_(), b); }
   Optimization_parameters worst_cell_phase(bool b) const { return with(internal::tag::worst_cell_phase_(), b); }
   Optimization_parameters ear_splits(bool b) const { return with(internal::tag::ear_splits_(), b); }
+  Optimization_parameters cavity_insertion(bool b) const { return with(internal::tag::cavity_insertion_(), b); }
   Optimization_parameters max_vertex_removals(long long n) const
   {
     return with(internal::tag::max_vertex_removals_(), n);
@@ -272,6 +276,7 @@ inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::max_verte
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::edge_contraction_> edge_contraction{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::worst_cell_phase_> worst_cell_phase{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::ear_splits_> ear_splits{};
+inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::cavity_insertion_> cavity_insertion{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::max_vertex_removals_> max_vertex_removals{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::max_min_threshold_> max_min_threshold{};
 inline constexpr BODT_3::internal::Dual_keyword<BODT_3::internal::tag::largest_angle_phase_> largest_angle_phase{};

@@ -103,6 +103,10 @@ struct Insertion_options
   /// before any shape test (`Smoothing_options::ear_splits` sets it in the main and the
   /// largest-angle phases).
   double ear_angle = 0;
+  /// Instead of the splits by shape: an interior vertex whose cavity and place are
+  /// chosen together (Cavity_insertion.h; `Smoothing_options::cavity_insertion`).
+  bool cavity = false;
+  int max_cavity_attempts = 16;   // cells tried by a pass, worst first
 };
 
 /// With `max_iteration_number = 0` (no limit), the pipeline still stops after this
@@ -182,6 +186,11 @@ struct Smoothing_options
   /// 3 and 5 on two hard grids, CGAL's sphere, the hand and the bunny; 2 raised the
   /// smallest angle as much as 5 for a small part of its time on the grids.
   double worst_cell_margin = 2;
+  /// In the worst-cell phase (with `vertex_insertion`): an interior vertex at the
+  /// worst cells, its cavity and place chosen together (Cavity_insertion.h), kept
+  /// where its cells compare better, worst first, than those it replaces. The
+  /// phase then starts whatever the worst cell.
+  bool cavity_insertion = false;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
   /// In the main and the largest-angle phases (with `vertex_insertion`), boundary ears are split:

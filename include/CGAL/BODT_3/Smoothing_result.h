@@ -53,6 +53,7 @@ struct Insertion_stats
   std::size_t cap_splits = 0;       // a face split at the projection of the opposite vertex
   std::size_t sliver_splits = 0;    // both opposite edges split (two vertices)
   std::size_t ear_splits = 0;       // a boundary ear's inner edge split at its middle (`ear_splits`)
+  std::size_t cavity_insertions = 0;   // an interior vertex in an optimized cavity (`cavity_insertion`)
   std::size_t undone = 0;           // insertions tried and undone, since they did not improve
   std::size_t vertices_added = 0;
   double seconds = 0;               // the pass, with the search for the cells it starts from
@@ -60,7 +61,7 @@ struct Insertion_stats
   static constexpr auto counters()
   {
     using S = Insertion_stats;
-    return std::make_tuple(&S::spade_splits, &S::wedge_splits, &S::cap_splits, &S::sliver_splits, &S::ear_splits, &S::undone,
+    return std::make_tuple(&S::spade_splits, &S::wedge_splits, &S::cap_splits, &S::sliver_splits, &S::ear_splits, &S::cavity_insertions, &S::undone,
                            &S::vertices_added, &S::seconds);
   }
   Insertion_stats& operator+=(const Insertion_stats& o)

@@ -83,7 +83,8 @@ inline double last_phase_max_min_threshold(const Smoothing_options& opt)
 /// minimum sine treats an angle and its supplement alike, so it leaves the
 /// angles between its worst and the largest one alone: the second phase lowers
 /// them, the last uses what that freed. With `worst_cell_phase` (and the minimum
-/// sine as the measure, the guard on), a fourth follows the mesh's worst cell.
+/// sine as the measure, the guard on), a fourth follows the mesh's worst cell;
+/// with `cavity_insertion`, it inserts vertices there too (Cavity_insertion.h).
 inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
 {
   std::vector<Phase> phases{{0, opt}};
@@ -116,7 +117,10 @@ inline std::vector<Phase> pipeline_phases(const Smoothing_options& opt)
   if(opt.worst_cell_phase && opt.quality_measure == Quality_measure::min_dihedral_sine && opt.quality_guard &&
      opt.max_min_threshold > 0)
   {
-    phases.push_back({3, last, true});
+    Smoothing_options worst = last;
+    worst.vertex_insertion = opt.vertex_insertion && opt.cavity_insertion;
+    worst.insertion.cavity = true;
+    phases.push_back({3, worst, true});
   }
   return phases;
 }
@@ -266,9 +270,11 @@ private:
     const double threshold = dihedral_sine(std::min(90.0, worst + opt.worst_cell_margin));
     // Below the last phase's own thresholds, its flips and max-min steps already
     // worked on these cells, and without sweeps this phase would repeat them.
-    if(threshold <= last_phase_max_min_threshold(options_)) return false;
+    // Insertion there is new work, wherever the worst cell is.
+    if(!opt.vertex_insertion && threshold <= last_phase_max_min_threshold(options_)) return false;
     opt.max_min_threshold = threshold;
     opt.flips.quality_threshold = threshold;
+    opt.insertion.quality_threshold = threshold;
     return true;
   }
 

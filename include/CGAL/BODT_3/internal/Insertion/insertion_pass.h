@@ -7,6 +7,7 @@
 #include <CGAL/BODT_3/Smoothing_result.h>
 #include <CGAL/BODT_3/internal/Classification/Vertex_classification.h>
 #include <CGAL/BODT_3/internal/Insertion/Bad_tet_shape.h>
+#include <CGAL/BODT_3/internal/Insertion/Cavity_insertion.h>
 #include <CGAL/BODT_3/internal/Insertion/Vertex_insertion.h>
 #include <CGAL/BODT_3/internal/Mesh/Triangulation_adapter.h>
 #include <CGAL/BODT_3/internal/Quality/dihedral_angles.h>
@@ -103,11 +104,27 @@ public:
     CGAL::Real_timer timer;
     timer.start();
     Insertion_stats stats;
+    int attempts = 0;
     for(const Candidate& e : candidates(seeds))
     {
       if(budget < 1) break;
       if(!e.still_there(adapter_.tds())) continue;
       if(history && !history->worth_trying(e.ids)) continue;
+      if(opt_.cavity)
+      {
+        // The worst cells only: in a good mesh most cells are near the worst.
+        if(++attempts > opt_.max_cavity_attempts) break;
+        if(try_cavity(e.cell))
+        {
+          keep(added, touched, stats);
+          ++stats.cavity_insertions;
+          budget -= 1;
+          if(history) ++history->clock;
+        }
+        else if(history)
+          history->record_failure(e.ids);
+        continue;
+      }
       if(const std::optional<std::array<int, 2>> inner = ear_inner_edge(e.cell))
       {
         keep_sine_ = true;
@@ -230,6 +247,35 @@ private:
     if(done && smooth_and_judge(own, before)) return true;
     undo();
     return false;
+  }
+
+  // An interior vertex in the best cavity found from cell c (Cavity_insertion),
+  // kept when its cones compare better, worst first, than the cavity's cells.
+  bool try_cavity(Cell_handle c)
+  {
+    records_.clear();
+    typename Cavity_insertion<Adapter>::Proposal proposal;
+    if(!Cavity_insertion<Adapter>(adapter_, bounds_, measure_)(c, proposal)) return false;
+    const auto region = adapter_.region(c);
+    const Vertex_handle e =
+        adapter_.create_vertex(proposal.point, Vertex_handle(), Vertex_handle(), typename Adapter::Patch(), region);
+    std::vector<New_cell<Vertex_handle>> cells;
+    const auto& cavity = proposal.cavity;
+    for(std::size_t k = 0; k < cavity.size(); ++k)
+      for(int i = 0; i < 4; ++i)
+        if(std::find(cavity.begin(), cavity.end(), cavity[k]->neighbor(i)) == cavity.end())
+        {
+          std::array<Vertex_handle, 4> q = {cavity[k]->vertex(0), cavity[k]->vertex(1), cavity[k]->vertex(2),
+                                            cavity[k]->vertex(3)};
+          q[static_cast<std::size_t>(i)] = e;
+          cells.push_back({q, static_cast<int>(k)});
+        }
+    Split_record<Adapter> r;
+    if(!replace_by_split(adapter_, cavity, cells, {}, e, r)) return false;
+    fresh_[r.vertex] = Vertex_motion<Vertex_handle>{Vertex_kind::interior, {}, {}};
+    records_.push_back(std::move(r));
+    cells_around({e});
+    return true;
   }
 
   bool split_shape(Cell_handle c, const Bad_tet& shape)
