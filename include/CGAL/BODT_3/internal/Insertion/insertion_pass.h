@@ -68,6 +68,10 @@ struct Vertex_motion
 /// facet, changes a subdomain's volume and the moves of the smoothing that follows
 /// are paid from it, as in the sweeps (Volume_budget.h); a split it cannot pay is undone.
 /// With a `distance` guard, the smoothing keeps surface vertices near the input's surface.
+///
+/// With `opt.cavity` (the worst-cell phase's `cavity_insertion`), the pass instead tries
+/// its `opt.max_cavity_attempts` worst cells by an interior vertex in an optimized
+/// cavity (Cavity_insertion.h), kept as found: no smoothing after it, nothing to undo.
 template <class Adapter, class Motion, class Vertex_id>
 class Insertion_pass
 {
