@@ -321,6 +321,27 @@ TEST(Splits, AnInvertingPointIsRefused)
 // compare better, worst first, than the cells they replace. Then the pass
 // inserts them: a valid complex, each subdomain's volume and each patch's area
 // the same, one vertex per insertion, and a better worst cell.
+// One insertion pass in cavity mode on `c3t3` (no history, every cell measured),
+// with the vertices numbered in the triangulation's order.
+BODT::Insertion_stats cavity_pass(File_c3t3& c3t3, const BODT::internal::Dihedral_bounds& bounds,
+                                  const BODT::Insertion_options& opt, int threads)
+{
+  Adapter adapter(c3t3, false);
+  auto motion = [](Vertex_handle) { return BODT::internal::Vertex_motion<Vertex_handle>{}; };
+  std::map<Vertex_handle, int> ids;
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+    ids.emplace(v, static_cast<int>(ids.size()));
+  auto vertex_id = [&](Vertex_handle v) {
+    const auto it = ids.find(v);
+    return it == ids.end() ? -1 : it->second;
+  };
+  std::vector<BODT::internal::Added_vertex<Vertex_handle>> added;
+  std::vector<Vertex_handle> touched;
+  return BODT::internal::insertion_pass(adapter, opt, bounds, BODT::Quality_measure::min_dihedral_sine,
+                                        BODT::Tensor_voting_options(), 100, false, motion, vertex_id, added, touched,
+                                        nullptr, nullptr, nullptr, nullptr, threads);
+}
+
 TEST(CavityInsertion, ConesTileTheCavityWithinItsSubdomainAndRaiseTheWorst)
 {
   const bodt_test::Delaunay_cells d(400);
@@ -355,8 +376,28 @@ TEST(CavityInsertion, ConesTileTheCavityWithinItsSubdomainAndRaiseTheWorst)
   {
     const auto c = cells[k].second;
     BODT::internal::Cavity_insertion<Adapter>::Proposal p;
-    if(!cavity(c, p)) continue;
+    const bool has = cavity(c, p);
+    // What the pass relies on to run searches ahead: an insertion elsewhere
+    // replaces its cavity's cells and changes its neighbours' adjacency, so a
+    // search is judged on cells it read, which holds its cavities' cells and
+    // their neighbours, found in the sorted list by the same test the pass uses.
+    using Search = BODT::internal::Cavity_insertion<Adapter>;
+    EXPECT_TRUE(std::is_sorted(p.read.begin(), p.read.end(), Search::by_address));
+    EXPECT_TRUE(Search::reads_any(p.read, {c}));
+    if(!has) continue;
     ++found;
+    for(const auto& x : p.cavity)
+      for(int i = 0; i < 4; ++i)
+      {
+        EXPECT_TRUE(Search::reads_any(p.read, {x}));
+        EXPECT_TRUE(Search::reads_any(p.read, {x->neighbor(i)}));
+      }
+    std::vector<File_c3t3::Cell_handle> elsewhere;   // cells no search from c looks at
+    for(auto y = c3t3.cells_in_complex_begin(); y != c3t3.cells_in_complex_end() && elsewhere.size() < 4; ++y)
+      if(!std::binary_search(p.read.begin(), p.read.end(), File_c3t3::Cell_handle(y), Search::by_address))
+        elsewhere.push_back(y);
+    std::sort(elsewhere.begin(), elsewhere.end(), Search::by_address);
+    EXPECT_FALSE(Search::reads_any(p.read, elsewhere));
     double cavity_volume = 0, cones_volume = 0;
     std::vector<double> cones;
     for(const auto& x : p.cavity)
@@ -392,19 +433,7 @@ TEST(CavityInsertion, ConesTileTheCavityWithinItsSubdomainAndRaiseTheWorst)
   BODT::Insertion_options opt;
   opt.cavity = true;
   opt.quality_threshold = 0.5;
-  auto motion = [](Vertex_handle) { return BODT::internal::Vertex_motion<Vertex_handle>{}; };
-  std::map<Vertex_handle, int> ids;
-  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
-    ids.emplace(v, static_cast<int>(ids.size()));
-  auto vertex_id = [&](Vertex_handle v) {
-    const auto it = ids.find(v);
-    return it == ids.end() ? -1 : it->second;
-  };
-  std::vector<BODT::internal::Added_vertex<Vertex_handle>> added;
-  std::vector<Vertex_handle> touched;
-  const auto stats =
-      BODT::internal::insertion_pass(adapter, opt, bounds, BODT::Quality_measure::min_dihedral_sine,
-                                     BODT::Tensor_voting_options(), 100, false, motion, vertex_id, added, touched);
+  const auto stats = cavity_pass(c3t3, bounds, opt, 1);
   EXPECT_GT(stats.cavity_insertions, 0u);
   EXPECT_EQ(stats.vertices_added, stats.cavity_insertions);
   expect_valid(c3t3);
@@ -419,6 +448,61 @@ TEST(CavityInsertion, ConesTileTheCavityWithinItsSubdomainAndRaiseTheWorst)
                                                                 pt(c->vertex(2)), pt(c->vertex(3))));
   EXPECT_GE(*std::min_element(qualities_after.begin(), qualities_after.end()), worst_before);
   EXPECT_GT(BODT::internal::compare_worst_first(qualities_after, qualities_before), 0);
+}
+
+// The cavity pass runs its searches ahead on the threads, in rounds of one cell
+// per thread, and uses a search only if no cell it read was replaced meanwhile:
+// on 1, 2 and 4 threads the same cells, at the same points, in the same order.
+TEST(CavityInsertion, SamePassOnAnyNumberOfThreads)
+{
+  const bodt_test::Delaunay_cells d(600);
+  std::vector<int> labels;
+  for(const auto& c : d.cells)
+  {
+    double y = 0;
+    for(int v : c) y += d.points[static_cast<std::size_t>(v)].y() / 4;
+    labels.push_back(y < 0.4 ? 1 : 3);
+  }
+  const Tet_mesh mesh = make_mesh(d.points, d.cells, labels);
+  using Cell_points = std::array<std::array<double, 3>, 4>;
+  auto run = [&](int threads, std::size_t& insertions) {
+    File_c3t3 c3t3;
+    BODT::tet_mesh_to_c3t3(mesh, c3t3, "test");
+    auto cp = c3t3.triangulation().geom_traits().construct_point_3_object();
+    BODT::internal::Dihedral_bounds bounds;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      bounds.include(cp(c->vertex(0)->point()), cp(c->vertex(1)->point()), cp(c->vertex(2)->point()),
+                     cp(c->vertex(3)->point()));
+    BODT::Insertion_options opt;
+    opt.cavity = true;
+    opt.quality_threshold = 0.5;
+    opt.max_cavity_attempts = 40;
+    insertions = cavity_pass(c3t3, bounds, opt, threads).cavity_insertions;
+    expect_valid(c3t3);
+    std::vector<std::pair<int, Cell_points>> cells;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    {
+      Cell_points q;
+      for(int k = 0; k < 4; ++k)
+      {
+        const Point x = cp(c->vertex(k)->point());
+        q[static_cast<std::size_t>(k)] = {x.x(), x.y(), x.z()};
+      }
+      std::sort(q.begin(), q.end());
+      cells.emplace_back(c3t3.subdomain_index(c), q);
+    }
+    std::sort(cells.begin(), cells.end());
+    return cells;
+  };
+  std::size_t one = 0;
+  const auto on_one = run(1, one);
+  EXPECT_GT(one, 1u) << "too few insertions for rounds to meet";
+  for(int threads : {2, 4})
+  {
+    std::size_t n = 0;
+    EXPECT_EQ(run(threads, n), on_one) << threads << " threads";
+    EXPECT_EQ(n, one);
+  }
 }
 
 // The pipeline with insertion over CGAL-meshed inputs: within the budget, every

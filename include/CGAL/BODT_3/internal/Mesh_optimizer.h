@@ -387,7 +387,7 @@ private:
                                      insertion_budget_, opt.moving_vertices == Moving_vertices::ALL,
                                      [this](Vertex_handle v) { return motion_of(v); }, vertex_id(), added_, touched_,
                                      &insertion_history_, seeded ? &insertion_candidates_ : nullptr,
-                                     &volume_budget_, &distance_);
+                                     &volume_budget_, &distance_, options_.threads);
     stats.insertion.seconds = timer_.time() - start;
     insertion_budget_ -= stats.insertion.vertices_added;
     clock_ = insertion_history_.clock;

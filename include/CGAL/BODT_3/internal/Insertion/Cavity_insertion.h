@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -45,8 +46,12 @@ public:
   struct Proposal
   {
     std::vector<Cell_handle> cavity;
+    std::vector<std::array<int, 2>> facets;   // its boundary: (cell of the cavity, facet), the cones' bases
     Point point;
     std::vector<double> before, after;   // the cavity's cells' qualities, the cones'
+    // Every cell the search read (sorted by address), whether it found a cavity or
+    // not: its verdict holds while none of them is replaced.
+    std::vector<Cell_handle> read;
   };
 
   int max_cells = 12;    // cells in a cavity at most
@@ -64,6 +69,8 @@ public:
   /// cones over t's own facets are parts of t, no better than it).
   bool operator()(Cell_handle t, Proposal& out) const
   {
+    read_ = &out.read;
+    read_->assign(1, t);
     double best = -std::numeric_limits<double>::infinity();
     std::vector<Cell_handle> cavity{t};
     grow(cavity, centroid(t), best, out);
@@ -71,8 +78,26 @@ public:
     for(int i = 0; i < 4; ++i)
       if(crossable(t, i, cavity)) cavity.push_back(t->neighbor(i));
     if(cavity.size() > 1) grow(cavity, centroid(t), best, out);
+    std::sort(read_->begin(), read_->end(), by_address);
+    read_->erase(std::unique(read_->begin(), read_->end()), read_->end());
     return best > -std::numeric_limits<double>::infinity();
   }
+
+  /// Whether a search that read the cells `read` (sorted by address, as a
+  /// proposal's) read one of `replaced` (sorted by address too).
+  static bool reads_any(const std::vector<Cell_handle>& read, const std::vector<Cell_handle>& replaced)
+  {
+    auto r = replaced.begin();
+    for(Cell_handle c : read)
+    {
+      while(r != replaced.end() && by_address(*r, c)) ++r;
+      if(r == replaced.end()) return false;
+      if(*r == c) return true;
+    }
+    return false;
+  }
+
+  static bool by_address(Cell_handle a, Cell_handle b) { return std::less<const void*>()(&*a, &*b); }
 
 private:
   // Grows the cavity from `cavity` (which holds p), each time across the worst
@@ -98,6 +123,8 @@ private:
       {
         best = worst;
         out.cavity = cavity;
+        out.facets.clear();
+        for(const Face& f : faces_) out.facets.push_back({f.in_cavity, f.index});
         out.point = p;
         out.before = before;
         out.after = after;
@@ -126,6 +153,7 @@ private:
   bool crossable(Cell_handle c, int i, const std::vector<Cell_handle>& cavity) const
   {
     const Cell_handle n = c->neighbor(i);
+    read_->push_back(n);
     if(adapter_.triangulation().is_infinite(n) || !(adapter_.region(n) == adapter_.region(c)) ||
        adapter_.patch(c, i).in_complex)
       return false;
@@ -137,6 +165,7 @@ private:
   {
     Cell_handle cell;
     int index;
+    int in_cavity;   // the cell's place in the cavity
   };
 
   Point point(Vertex_handle v) const { return bare_point(adapter_.triangulation(), v); }
@@ -163,8 +192,11 @@ private:
   bool joins(Cell_handle n, const std::vector<Cell_handle>& cavity) const
   {
     for(int i = 0; i < 4; ++i)
+    {
+      read_->push_back(n->neighbor(i));
       if(std::find(cavity.begin(), cavity.end(), n->neighbor(i)) != cavity.end() && adapter_.patch(n, i).in_complex)
         return false;
+    }
     return true;
   }
 
@@ -172,9 +204,14 @@ private:
   void boundary(const std::vector<Cell_handle>& cavity) const
   {
     faces_.clear();
-    for(Cell_handle c : cavity)
+    for(std::size_t k = 0; k < cavity.size(); ++k)
       for(int i = 0; i < 4; ++i)
-        if(std::find(cavity.begin(), cavity.end(), c->neighbor(i)) == cavity.end()) faces_.push_back({c, i});
+      {
+        const Cell_handle n = cavity[k]->neighbor(i);
+        read_->push_back(n);
+        if(std::find(cavity.begin(), cavity.end(), n) == cavity.end())
+          faces_.push_back({cavity[k], i, static_cast<int>(k)});
+      }
   }
 
   std::array<Point, 4> cone_points(const Face& f, const Point& p) const
@@ -267,6 +304,7 @@ private:
   Quality_measure measure_;
   double small_bound_, large_bound_;   // the bounds' angles, in radians
   mutable std::vector<Face> faces_;
+  mutable std::vector<Cell_handle>* read_ = nullptr;   // the proposal's, during a search
 };
 
 } // namespace internal

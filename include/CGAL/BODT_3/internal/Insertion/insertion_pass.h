@@ -16,6 +16,7 @@
 #include <CGAL/BODT_3/internal/Smoothing/Volume_budget.h>
 #include <CGAL/BODT_3/internal/Utilities/Attempt_history.h>
 #include <CGAL/BODT_3/internal/Utilities/Candidate_cell.h>
+#include <CGAL/BODT_3/internal/Utilities/Thread_workers.h>
 #include <CGAL/BODT_3/internal/Utilities/bare_point.h>
 
 #include <CGAL/FPU.h>
@@ -71,7 +72,8 @@ struct Vertex_motion
 ///
 /// With `opt.cavity` (the worst-cell phase's `cavity_insertion`), the pass instead tries
 /// its `opt.max_cavity_attempts` worst cells by an interior vertex in an optimized
-/// cavity (Cavity_insertion.h), kept as found: no smoothing after it, nothing to undo.
+/// cavity (Cavity_insertion.h), kept as found: no smoothing after it, nothing to undo;
+/// the searches run on `threads` threads, with the same result on any number.
 template <class Adapter, class Motion, class Vertex_id>
 class Insertion_pass
 {
@@ -86,10 +88,10 @@ public:
   Insertion_pass(Adapter& adapter, const Insertion_options& opt, const Dihedral_bounds& bounds,
                  Quality_measure measure, const Tensor_voting_options& voting, bool boundary_moves,
                  const Motion& motion, const Vertex_id& vertex_id, Volume_budget* volume_budget,
-                 const Distance_guard* distance = nullptr)
+                 const Distance_guard* distance = nullptr, int threads = 1)
     : adapter_(adapter), tr_(adapter.triangulation()), opt_(opt), bounds_(bounds), measure_(measure),
       boundary_moves_(boundary_moves), motion_(motion), vertex_id_(vertex_id), volume_budget_(volume_budget),
-      smoother_(adapter, bounds, measure, voting, volume_budget, distance)
+      smoother_(adapter, bounds, measure, voting, volume_budget, distance), searchers_(threads)
   {
     shapes_ = opt.shapes;
     shapes_.small_angle = std::asin(std::min(1.0, opt.quality_threshold)) * 180 / pi;
@@ -108,27 +110,17 @@ public:
     CGAL::Real_timer timer;
     timer.start();
     Insertion_stats stats;
-    int attempts = 0;
+    if(opt_.cavity)
+    {
+      cavities(candidates(seeds), budget, added, touched, history, stats);
+      stats.seconds = timer.time();
+      return stats;
+    }
     for(const Candidate& e : candidates(seeds))
     {
       if(budget < 1) break;
       if(!e.still_there(adapter_.tds())) continue;
       if(history && !history->worth_trying(e.ids)) continue;
-      if(opt_.cavity)
-      {
-        // The worst cells only: in a good mesh most cells are near the worst.
-        if(++attempts > opt_.max_cavity_attempts) break;
-        if(try_cavity(e.cell))
-        {
-          keep(added, touched, stats);
-          ++stats.cavity_insertions;
-          budget -= 1;
-          if(history) ++history->clock;
-        }
-        else if(history)
-          history->record_failure(e.ids);
-        continue;
-      }
       if(const std::optional<std::array<int, 2>> inner = ear_inner_edge(e.cell))
       {
         keep_sine_ = true;
@@ -253,27 +245,85 @@ private:
     return false;
   }
 
-  // An interior vertex in the best cavity found from cell c (Cavity_insertion),
-  // kept when its cones compare better, worst first, than the cavity's cells.
-  bool try_cavity(Cell_handle c)
+  // The cavity mode: the worst cells, at most `opt_.max_cavity_attempts` tried,
+  // in order, each by the best cavity found from it (Cavity_insertion). The
+  // searches only read the mesh: they run ahead, concurrently, on the next cells
+  // worth trying as a round starts (one per thread); then, in order, a cell's
+  // search is used if none of the cells it read was replaced since, else made
+  // again on the mesh as it is. Either way each cell gets the search the
+  // one-by-one order gives it: the same result on any number of threads.
+  void cavities(const std::vector<Candidate>& candidates, std::size_t budget,
+                std::vector<Added_vertex<Vertex_handle>>& added, std::vector<Vertex_handle>& touched,
+                Attempt_history* history, Insertion_stats& stats)
+  {
+    using Search = Cavity_insertion<Adapter>;
+    auto worth_trying = [&](const Candidate& e) {
+      return e.still_there(adapter_.tds()) && (!history || history->worth_trying(e.ids));
+    };
+    int attempts = 0;
+    std::vector<std::size_t> ahead;
+    std::vector<typename Search::Proposal> proposals;
+    std::vector<char> found;
+    std::vector<Cell_handle> replaced;   // since the round's searches, by address
+    for(std::size_t next = 0; next < candidates.size();)
+    {
+      ahead.clear();
+      std::size_t end = next;
+      // The worst cells only: in a good mesh most cells are near the worst.
+      if(attempts >= opt_.max_cavity_attempts) return;
+      const std::size_t room = static_cast<std::size_t>(opt_.max_cavity_attempts - attempts);
+      const std::size_t round = std::min(room, static_cast<std::size_t>(searchers_.threads()));
+      for(; end < candidates.size() && ahead.size() < round; ++end)
+        if(worth_trying(candidates[end])) ahead.push_back(end);
+      proposals.resize(ahead.size());
+      found.assign(ahead.size(), 0);
+      searchers_.for_each(0, static_cast<int>(ahead.size()), [&](char&, int k) {
+        const std::size_t j = static_cast<std::size_t>(k);
+        found[j] = Search(adapter_, bounds_, measure_)(candidates[ahead[j]].cell, proposals[j]);
+      }, 1);
+      replaced.clear();
+      for(std::size_t a = 0; next < end; ++next)
+      {
+        const Candidate& e = candidates[next];
+        if(budget < 1) return;
+        if(!worth_trying(e)) continue;
+        if(++attempts > opt_.max_cavity_attempts) return;
+        while(a < ahead.size() && ahead[a] < next) ++a;
+        typename Search::Proposal own;
+        const bool ran_ahead = a < ahead.size() && ahead[a] == next && !Search::reads_any(proposals[a].read, replaced);
+        typename Search::Proposal& proposal = ran_ahead ? proposals[a] : own;
+        const bool has = ran_ahead ? found[a] != 0 : Search(adapter_, bounds_, measure_)(e.cell, proposal);
+        if(has && insert_in_cavity(e.cell, proposal))
+        {
+          replaced.insert(replaced.end(), proposal.cavity.begin(), proposal.cavity.end());
+          std::sort(replaced.begin(), replaced.end(), Search::by_address);
+          keep(added, touched, stats);
+          ++stats.cavity_insertions;
+          budget -= 1;
+          if(history) ++history->clock;
+        }
+        else if(history)
+          history->record_failure(e.ids);
+      }
+    }
+  }
+
+  // An interior vertex at the proposal's point, joined to its cavity's boundary.
+  bool insert_in_cavity(Cell_handle c, const typename Cavity_insertion<Adapter>::Proposal& proposal)
   {
     records_.clear();
-    typename Cavity_insertion<Adapter>::Proposal proposal;
-    if(!Cavity_insertion<Adapter>(adapter_, bounds_, measure_)(c, proposal)) return false;
     const auto region = adapter_.region(c);
     const Vertex_handle e =
         adapter_.create_vertex(proposal.point, Vertex_handle(), Vertex_handle(), typename Adapter::Patch(), region);
     std::vector<New_cell<Vertex_handle>> cells;
     const auto& cavity = proposal.cavity;
-    for(std::size_t k = 0; k < cavity.size(); ++k)
-      for(int i = 0; i < 4; ++i)
-        if(std::find(cavity.begin(), cavity.end(), cavity[k]->neighbor(i)) == cavity.end())
-        {
-          std::array<Vertex_handle, 4> q = {cavity[k]->vertex(0), cavity[k]->vertex(1), cavity[k]->vertex(2),
-                                            cavity[k]->vertex(3)};
-          q[static_cast<std::size_t>(i)] = e;
-          cells.push_back({q, static_cast<int>(k)});
-        }
+    for(const auto& [k, i] : proposal.facets)
+    {
+      const Cell_handle x = cavity[static_cast<std::size_t>(k)];
+      std::array<Vertex_handle, 4> q = {x->vertex(0), x->vertex(1), x->vertex(2), x->vertex(3)};
+      q[static_cast<std::size_t>(i)] = e;
+      cells.push_back({q, k});
+    }
     Split_record<Adapter> r;
     if(!replace_by_split(adapter_, cavity, cells, {}, e, r)) return false;
     fresh_[r.vertex] = Vertex_motion<Vertex_handle>{Vertex_kind::interior, {}, {}};
@@ -536,6 +586,7 @@ private:
   const Vertex_id& vertex_id_;
   Volume_budget* volume_budget_;
   Local_smoothing<Adapter> smoother_;
+  Thread_workers<char> searchers_;   // the cavity searches run ahead
   Volume_change change_;
   std::map<Vertex_handle, Vertex_motion<Vertex_handle>> fresh_;   // vertices added in this pass
   // The attempt under way: its splits, and the vertices its smoothing moved.
@@ -559,10 +610,11 @@ Insertion_stats insertion_pass(Adapter& adapter, const Insertion_options& opt, c
                                const std::vector<typename Adapter::Cell_handle>* seeds = nullptr,
                                Volume_budget* volume_budget = nullptr,
                                const typename Insertion_pass<Adapter, Motion, Vertex_id>::Distance_guard* distance =
-                                   nullptr)
+                                   nullptr,
+                               int threads = 1)
 {
   Insertion_pass<Adapter, Motion, Vertex_id> pass(adapter, opt, bounds, measure, voting, boundary_moves, motion,
-                                                  vertex_id, volume_budget, distance);
+                                                  vertex_id, volume_budget, distance, threads);
   return pass(budget, added, touched, history, seeds);
 }
 

@@ -84,6 +84,7 @@ public:
   /// and the result is the same, bit for bit, on any number of threads.
   void run(Iteration_stats& stats)
   {
+    if(order_.colour_begin.empty()) order_ = sweep_order(mesh_, movable());
     for(std::size_t k = 0; k + 1 < order_.colour_begin.size(); ++k)
     {
       const int begin = order_.colour_begin[k], end = order_.colour_begin[k + 1];
@@ -187,16 +188,18 @@ public:
   /// Whether vertex `v` moved so far.
   bool has_moved(int v) const { return moved_once_[v] != 0; }
 
-  /// Derives the sweep order and, per vertex, the vertices whose move depends on
-  /// it: a vertex whose last move was zero, frozen or refused gets the same verdict
-  /// again until a vertex of its star, or the far vertex of one of its hull checks,
-  /// moves; such vertices are skipped, which changes no result.
+  /// Derives, per vertex, the vertices whose move depends on it (and drops the
+  /// sweep order, which the next sweep makes again): a vertex whose last move was
+  /// zero, frozen or refused gets the same verdict again until a vertex of its
+  /// star, or the far vertex of one of its hull checks, moves; such vertices are
+  /// skipped, which changes no result.
   void derive()
   {
     const int nv = static_cast<int>(mesh_.number_of_vertices());
-    std::vector<char> movable(nv);
-    for(int v = 0; v < nv; ++v) movable[v] = classification_.kind[v] != Vertex_kind::fixed;
-    order_ = sweep_order(mesh_, movable);
+    const std::vector<char> movable = this->movable();
+    // The order is made by the next sweep: a phase without sweeps (the worst
+    // cells') re-derives after every change of cells and never uses it.
+    order_ = Sweep_order();
     // The vertices to revisit when u moves: the movable vertices sharing a cell
     // with u, and those with a hull check whose far vertex is u. Flat (one array
     // for all): re-derived after every pass that changes the connectivity.
@@ -387,6 +390,13 @@ private:
       if(k < found.costs.size()) spent += found.costs[k];
     }
     return true;
+  }
+
+  std::vector<char> movable() const
+  {
+    std::vector<char> m(mesh_.number_of_vertices());
+    for(std::size_t v = 0; v < m.size(); ++v) m[v] = classification_.kind[v] != Vertex_kind::fixed;
+    return m;
   }
 
   void mark_dependents(int v)
