@@ -111,10 +111,14 @@ private:
       boundary(cavity);
       p = place(p);
       searched.clear();
-      for(const Face& f : faces_) searched.push_back(cone(f, p));
-      const bool within = *std::min_element(searched.begin(), searched.end()) >= 1;
       after.clear();
-      for(const Face& f : faces_) after.push_back(measure_of(cone_points(f, p)));
+      for(const Face& f : faces_)
+      {
+        double measure = 0;
+        searched.push_back(cone(f, p, &measure));
+        after.push_back(measure);
+      }
+      const bool within = *std::min_element(searched.begin(), searched.end()) >= 1;
       before.clear();
       for(Cell_handle c : cavity) before.push_back(quality(c));
       const double worst = *std::min_element(after.begin(), after.end());
@@ -227,13 +231,17 @@ private:
   // replaced by p, for the search: within the bounds, one plus its measure;
   // outside, how far its smallest and largest angles are in, each over the room
   // the bounds leave it (1 at the bound); an inverted cone below all, by its volume.
-  double cone(const Face& f, const Point& p) const
+  // Its measure goes to `measure` if given.
+  double cone(const Face& f, const Point& p, double* measure = nullptr) const
   {
     const std::array<Point, 4> q = cone_points(f, p);
     const double v = measure_of(q);
+    if(measure) *measure = v;
     if(v < 0) return -4 + signed_shape(q[0], q[1], q[2], q[3]);
-    if(bounds_.contains(q[0], q[1], q[2], q[3], measure_ == Quality_measure::min_dihedral_sine ? v : 0.0)) return 1 + v;
-    const auto c = dihedral_cosines(q[0], q[1], q[2], q[3]);
+    const double sine = measure_ == Quality_measure::min_dihedral_sine ? v : 0.0;
+    if(bounds_.safe(sine)) return 1 + v;
+    const auto c = dihedral_cosines(q[0], q[1], q[2], q[3]);   // computed once, for both
+    if(bounds_.contains(c, sine)) return 1 + v;
     const double smallest = std::acos(std::min(1.0, *std::max_element(c.begin(), c.end())));
     const double largest = std::acos(std::max(-1.0, *std::min_element(c.begin(), c.end())));
     return std::min(smallest / small_bound_, (pi - largest) / (pi - large_bound_));
@@ -250,10 +258,25 @@ private:
     return std::max(-1.0, std::min(1.0, det / (l * std::sqrt(l))));
   }
 
-  double worst_cone(const Point& p) const
+  // The worst cone from p, and its face in `worst`; or, once it is known to be
+  // at most `floor`, some value at most `floor`: a point no better than the best
+  // so far is left at its first cone that says so. Face `first` (the one that
+  // limited the search's point) is tried first.
+  double worst_cone(const Point& p, std::size_t first, std::size_t& worst,
+                    double floor = -std::numeric_limits<double>::infinity()) const
   {
+    worst = first;
     double w = std::numeric_limits<double>::infinity();
-    for(const Face& f : faces_) w = std::min(w, cone(f, p));
+    for(std::size_t n = 0; n < faces_.size(); ++n)
+    {
+      const std::size_t k = n == 0 ? first : (n <= first ? n - 1 : n);
+      if(const double c = cone(faces_[k], p); c < w)
+      {
+        w = c;
+        worst = k;
+        if(w <= floor) break;
+      }
+    }
     return w;
   }
 
@@ -273,25 +296,30 @@ private:
     static const double dirs[14][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},   {0, -1, 0}, {0, 0, 1},
                                        {0, 0, -1}, {d, d, d},  {d, d, -d},  {d, -d, d}, {d, -d, -d},
                                        {-d, d, d}, {-d, d, -d}, {-d, -d, d}, {-d, -d, -d}};
-    double value = worst_cone(p);
+    std::size_t limiting = 0;   // the face of the worst cone at p
+    double value = worst_cone(p, 0, limiting);
     for(int round = 0; round < max_rounds && h > stop; ++round)
     {
       Point best = p;
       double best_value = value;
+      std::size_t best_limiting = limiting;
       for(const auto& dir : dirs)
       {
         const Point q(p.x() + h * dir[0], p.y() + h * dir[1], p.z() + h * dir[2]);
-        const double v = worst_cone(q);
+        std::size_t worst = 0;
+        const double v = worst_cone(q, limiting, worst, best_value);
         if(v > best_value)
         {
           best_value = v;
           best = q;
+          best_limiting = worst;
         }
       }
       if(best_value > value)
       {
         p = best;
         value = best_value;
+        limiting = best_limiting;
       }
       else
         h *= 0.5;

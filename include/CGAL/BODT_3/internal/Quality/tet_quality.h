@@ -238,6 +238,10 @@ public:
   /// The same for a tetrahedron whose dihedral cosines are known.
   bool contains(const std::array<double, 6>& cosines, double q) const { return q >= safe_ || within(cosines); }
 
+  /// Whether a tetrahedron of minimum sine `q` is within the bounds whatever its
+  /// cosines (`contains` then needs none).
+  bool safe(double q) const { return q >= safe_; }
+
   double cos_smallest() const { return cos_smallest_; }   // the cosine of the smallest angle allowed
   double cos_largest() const { return cos_largest_; }     // the cosine of the largest angle allowed
 
