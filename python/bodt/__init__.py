@@ -97,7 +97,7 @@ def smooth(points, tets=None, labels=None, triangles=None, triangle_labels=None,
         largest-angle threshold) split at their inner edge, in the main and the
         largest-angle phases: a lower largest angle on curved Mesh_3 outputs, at
         some cost in the smallest on some meshes.
-    cavity_insertion (False): in the worst-cell phase (which then always runs),
+    cavity_insertion (True): in the worst-cell phase (which then always runs),
         interior vertices at the worst cells, each with its cavity and place chosen
         together: higher smallest angles on curved Mesh_3 outputs, more time.
     edge_contraction (False): in the last phase, vertices inside a subdomain or on

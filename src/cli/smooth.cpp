@@ -345,7 +345,7 @@ Command add_smooth(CLI::App& command)
                    "degrees of the worst, until the extreme angles stop improving (default: on)");
   command.add_flag("--cavity-insertion,!--no-cavity-insertion", o->smoothing.cavity_insertion,
                    "in the worst-cell phase, insert interior vertices at the worst tetrahedra, each in a cavity "
-                   "grown and a place searched for the best worst tetrahedron (default: off)");
+                   "grown and a place searched for the best worst tetrahedron (default: on)");
   command.add_flag("--contraction,!--no-contraction", o->smoothing.edge_contraction,
                    "edge contraction: remove vertices inside a subdomain or on a flat part of the surface where "
                    "that raises the worst tetrahedron around them (default: off)");

@@ -364,11 +364,13 @@ TEST(C3t3Conversion, SmoothingAConvertedMeshKeepsTheVolumePerSubdomain)
     for(const auto& kv : before.volume_per_subdomain)
       EXPECT_NEAR(after.volume_per_subdomain.at(kv.first), kv.second, 1e-10 * kv.second) << "subdomain " << kv.first;
     const std::vector<Point> p1 = finite_points(c);
-    ASSERT_EQ(p1.size(), p0.size());
-    std::size_t moved = 0;
-    for(std::size_t i = 0; i < p0.size(); ++i) moved += p0[i] != p1[i];
-    EXPECT_GT(moved, p0.size() / 10);
+    // Insertion (the worst-cell phase's cavities) may add vertices, within its 5%.
+    ASSERT_GE(p1.size(), p0.size());
+    ASSERT_LE(p1.size(), p0.size() + p0.size() / 20);
     const std::set<Point> now(p1.begin(), p1.end());
+    std::size_t moved = 0;
+    for(const Point& p : p0) moved += now.count(p) == 0;
+    EXPECT_GT(moved, p0.size() / 10);
     for(const Point& p : corners) EXPECT_TRUE(now.count(p)) << "corner " << p << " moved";
   }
 }

@@ -100,6 +100,7 @@ TEST(Parameters, ChainSetsEveryOption)
   EXPECT_FALSE(d.edge_contraction);
   EXPECT_EQ(d.max_vertex_removals, -1);
   EXPECT_TRUE(d.worst_cell_phase);
+  EXPECT_TRUE(d.cavity_insertion);
   EXPECT_EQ(d.max_min_threshold, defaults.max_min_threshold);
   EXPECT_EQ(d.smoothing_method, BODT::Smoothing_method::BODT);
   EXPECT_EQ(d.max_iteration_number, defaults.max_iteration_number);

@@ -190,7 +190,7 @@ struct Smoothing_options
   /// worst cells, its cavity and place chosen together (Cavity_insertion.h), kept
   /// where its cells compare better, worst first, than those it replaces. The
   /// phase then starts whatever the worst cell.
-  bool cavity_insertion = false;
+  bool cavity_insertion = true;
   /// Vertex insertion at spades, caps and slivers (paper, Sec. 2.3).
   bool vertex_insertion = true;
   /// In the main and the largest-angle phases (with `vertex_insertion`), boundary ears are split:
