@@ -529,28 +529,89 @@ TEST(RandomSphere, ReReadAfterChangesIsAFirstRead)
 
 namespace {
 
+// Moves some vertices of the view through `guard` (written back), then some on
+// the triangulation alone (the view's points stay, so that the re-read finds
+// them moved); returns how many of each.
+template <class Adapter, class Guard>
+std::array<std::size_t, 2> move_some(Adapter& adapter, BODT::internal::Flat_view<Adapter>& view, Guard& guard)
+{
+  using Vertex_handle = typename Adapter::Vertex_handle;
+  const auto& m = view.mesh();
+  typename Guard::Trial trial;
+  std::array<std::size_t, 2> moved{0, 0};
+  auto toward_neighbours = [&](int v) {
+    typename Guard::Vector sum(0, 0, 0);
+    int n = 0;
+    for(int k = m.incidence_begin[v]; k < m.incidence_begin[v + 1]; ++k)
+      for(int w : m.incidences[k].face)
+      {
+        sum = sum + (m.points[w] - m.points[v]);
+        ++n;
+      }
+    return n == 0 ? sum : sum / (10.0 * n);
+  };
+  const int nv = static_cast<int>(m.number_of_vertices());
+  for(int v = 0; v < nv && moved[0] < 20; v += 5)
+    if(view.vertices()[v] != Vertex_handle()) moved[0] += guard.move(v, toward_neighbours(v), trial) > 0;
+  view.write_back();
+  for(int v = 2; v < nv && moved[1] < 20; v += 5)
+  {
+    if(view.vertices()[v] == Vertex_handle()) continue;
+    const auto p = m.points[v] + toward_neighbours(v);
+    if(p == m.points[v] || !guard.accepts(v, p, trial)) continue;
+    BODT::internal::set_bare_point(adapter.triangulation(), view.vertices()[v], p);
+    ++moved[1];
+  }
+  return moved;
+}
+
 // Flip passes (of the cells whose smallest sine is below `threshold`), then
 // `splits` edges split (every third split undone), then flips again, each
-// followed by a re-read; returns the flips, the splits kept and the re-reads that
-// took only the new cells from the triangulation.
+// after some moves (move_some) and followed by a re-read; returns the flips, the
+// splits kept, the re-reads that took only the new cells from the
+// triangulation, and the moves through the guard and on the triangulation that
+// a re-read followed. After each re-read the move guard, refreshed from the cells'
+// moves and the moved vertices, has the qualities (bit for bit) and the
+// volume-keeping vertices that a guard made on the mesh then has.
 template <class Adapter>
-std::array<std::size_t, 3> change_and_reread(Adapter& adapter, BODT::internal::Flat_view<Adapter>& view,
+std::array<std::size_t, 5> change_and_reread(Adapter& adapter, BODT::internal::Flat_view<Adapter>& view,
                                              bool flip_outside, double threshold, std::size_t splits)
 {
   namespace I = BODT::internal;
   using Vertex_handle = typename Adapter::Vertex_handle;
   using Cell_handle = typename Adapter::Cell_handle;
+  using Guard = I::Move_guard<typename I::Flat_view<Adapter>::Kernel>;
   auto& tr = adapter.triangulation();
   auto vertex_id = [&view](Vertex_handle v) { return view.index(v); };
   BODT::Flip_options flips;
   flips.quality_threshold = threshold;
   flips.flip_outside = flip_outside;
-  std::array<std::size_t, 3> done{0, 0, 0};
+  std::array<std::size_t, 5> done{0, 0, 0, 0, 0};
+  const I::Volume_budget budget = I::Volume_budget::of(view.mesh());
+  Guard guard(view.mesh(), true, I::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine, 1, &budget);
+  std::array<std::size_t, 2> moves{0, 0};
+  std::size_t seen_moved = 0, last_direct = 0;
   auto reread = [&] {
     view.refresh();
+    std::vector<int> moved;
+    view.read_points(&moved);
+    seen_moved += moved.size();
+    guard.refresh(view.last_cell_moves(), moved);
     done[2] += view.cells_read() > 0 && view.cells_read() < view.cells().size();
     expect_first_read(adapter, view);
+    const Guard fresh(view.mesh(), true, I::Dihedral_bounds(), BODT::Quality_measure::min_dihedral_sine, 1, &budget);
+    std::size_t differ = 0;
+    for(int c = 0; c < static_cast<int>(view.mesh().cells.size()); ++c)
+      differ += guard.cell_quality(c) != fresh.cell_quality(c);
+    EXPECT_EQ(differ, 0u) << "cell qualities not those of a whole refresh";
+    for(int v = 0; v < static_cast<int>(view.mesh().number_of_vertices()); ++v)
+      ASSERT_EQ(guard.keeps_volume(v), fresh.keeps_volume(v)) << "vertex " << v;
+    const auto now = move_some(adapter, view, guard);
+    moves[0] += now[0];
+    moves[1] += now[1];
+    last_direct = now[1];
   };
+  reread();
   auto flip_and_reread = [&] {
     std::vector<Vertex_handle> touched;
     done[0] += I::flip_pass(adapter, flips, I::Dihedral_bounds(), vertex_id, touched).total();
@@ -577,14 +638,17 @@ std::array<std::size_t, 3> change_and_reread(Adapter& adapter, BODT::internal::F
   }
   reread();
   for(int pass = 0; pass < 2; ++pass) flip_and_reread();
+  EXPECT_EQ(seen_moved, moves[1] - last_direct) << "the re-reads did not find the moves made on the triangulation";
+  done[3] = moves[0];
+  done[4] = seen_moved;
   return done;
 }
 
 // change_and_reread on a view of `adapter` that follows the changes: enough
-// flips, splits and re-reads of the new cells alone to have tested something.
+// flips, splits, re-reads of the new cells alone and moves to have tested something.
 template <class Adapter>
 void expect_rereads_of_changes(Adapter& adapter, bool flip_outside, double threshold, int splits,
-                               std::size_t at_least_splits)
+                               std::size_t at_least_splits, std::size_t at_least_moves)
 {
   BODT::internal::Flat_view<Adapter> view(adapter);
   view.follow_changes();
@@ -592,6 +656,8 @@ void expect_rereads_of_changes(Adapter& adapter, bool flip_outside, double thres
   EXPECT_GT(done[0], 10u) << "flips";
   EXPECT_GE(done[1], at_least_splits) << "splits";
   EXPECT_GE(done[2], 2u) << "re-reads of the new cells alone";
+  EXPECT_GE(done[3], at_least_moves) << "moves through the guard";
+  EXPECT_GE(done[4], at_least_moves) << "moves on the triangulation";
 }
 
 } // namespace
@@ -600,7 +666,9 @@ void expect_rereads_of_changes(Adapter& adapter, bool flip_outside, double thres
 // replace_cells logged): after flip passes, edge splits kept and undone, on
 // CGAL-meshed inputs with features and two subdomains (with flips outside the
 // complex, by its convex hull) and on the paper's random sphere, every re-read
-// gives what a first read gives.
+// gives what a first read gives; and the move guard refreshed from the changes
+// (Move_guard::refresh with the cells' moves and the moved vertices) what a
+// guard made anew gives, bit for bit.
 TEST(FlatView, ReReadOfTheLoggedChangesIsAFirstRead)
 {
   for(Shape shape : {Shape::two_subdomains, Shape::genus2})
@@ -608,11 +676,12 @@ TEST(FlatView, ReReadOfTheLoggedChangesIsAFirstRead)
     SCOPED_TRACE(name(shape));
     C3t3 c3t3 = make_input(shape, Size::small).c3t3;
     BODT::internal::C3t3_adapter<C3t3> adapter(c3t3);
-    expect_rereads_of_changes(adapter, true, 0.3, 12, 4);
+    expect_rereads_of_changes(adapter, true, 0.3, 12, 4, 20);
   }
   Delaunay tr = make_random_sphere();
   BODT::internal::Triangulation_3_adapter<Delaunay> adapter(tr);
-  expect_rereads_of_changes(adapter, false, 0.05, 4, 1);
+  // Its vertices are mostly on the convex hull, which the guard keeps convex: few moves.
+  expect_rereads_of_changes(adapter, false, 0.05, 4, 1, 0);
 }
 
 TEST(Visitor, ReportsEveryIteration)

@@ -401,7 +401,8 @@ private:
   {
     const double start = timer_.time();
     view_.refresh();
-    view_.read_points();
+    std::vector<int> moved;   // by the pass, on the triangulation
+    view_.read_points(&moved);
     classification_.kind.resize(mesh_.number_of_vertices(), Vertex_kind::fixed);
     classification_.curve_neighbors.resize(mesh_.number_of_vertices(), {-1, -1});
     for(const auto& a : added_) classify_added(a);
@@ -414,7 +415,7 @@ private:
     changed_at_.resize(mesh_.number_of_vertices(), now);
     new_star_at_.resize(mesh_.number_of_vertices(), now);
     for(int v : changed) changed_at_[v] = new_star_at_[v] = now;
-    sweep_->refresh(changed);
+    sweep_->refresh(changed, view_.last_cell_moves(), moved);
     stats.reread_seconds += timer_.time() - start;
     charge(result_.phases.reread);
   }

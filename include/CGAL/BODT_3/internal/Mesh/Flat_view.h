@@ -65,6 +65,20 @@ public:
   /// the new ones when it followed the changes.
   std::size_t cells_read() const { return cells_read_; }
   const std::vector<Vertex_handle>& vertices() const { return handles_; }
+
+  /// Where the last `refresh` put the cells of the read before it: after a read of
+  /// the changes, the kept cells moved as `Index_shift::relocate` with `shift` and
+  /// `kept_before` moves an array (their vertices, in order, unchanged) and the new
+  /// cells are at `fresh`; after a whole read (`whole`), any cell may be anywhere.
+  struct Cell_moves
+  {
+    bool whole = true;
+    Index_shift shift;
+    std::vector<std::size_t> kept_before;
+    std::vector<int> fresh;
+  };
+  const Cell_moves& last_cell_moves() const { return moves_; }
+
   int index(Vertex_handle v) const
   {
     const int i = index_.find(v);
@@ -99,6 +113,7 @@ public:
       // The incidences are derived again below: freed first, so that they are not
       // held with the old and the new cell arrays of the whole read at once.
       mesh_.release_incidences();
+      moves_ = Cell_moves();
       read_cells();
       cells_read_ = cells_.size();
     }
@@ -119,11 +134,17 @@ public:
       if(handles_[i] != Vertex_handle()) set_bare_point(adapter_.triangulation(), handles_[i], mesh_.points[i]);
   }
 
-  /// Re-reads the positions from the triangulation (after moves made on it directly).
-  void read_points()
+  /// Re-reads the positions from the triangulation (after moves made on it
+  /// directly); appends to `moved`, when given, the vertices whose position changed.
+  void read_points(std::vector<int>* moved = nullptr)
   {
     for(std::size_t i = 0; i < handles_.size(); ++i)
-      if(handles_[i] != Vertex_handle()) mesh_.points[i] = bare_point(adapter_.triangulation(), handles_[i]);
+    {
+      if(handles_[i] == Vertex_handle()) continue;
+      const Bare_point p = bare_point(adapter_.triangulation(), handles_[i]);
+      if(moved && p != mesh_.points[i]) moved->push_back(static_cast<int>(i));
+      mesh_.points[i] = p;
+    }
   }
 
 private:
@@ -337,7 +358,9 @@ private:
     // The cells of the last read in a changed slot are gone; the finite cells now
     // in one are new. A new cell goes before the first cell of the last read with
     // a larger slot (`before`, an old index).
-    Index_shift shift;
+    moves_.whole = false;
+    Index_shift& shift = moves_.shift;
+    shift.gone.clear();
     std::vector<std::pair<std::uint32_t, Cell_handle>> fresh;
     std::vector<std::size_t> before;
     for(const auto& [slot, c] : slots)
@@ -370,7 +393,8 @@ private:
       }
 
     // Where the new cells go: after the kept cells before them, and the new ones before.
-    std::vector<std::size_t> kept_before(fresh.size());
+    std::vector<std::size_t>& kept_before = moves_.kept_before;
+    kept_before.assign(fresh.size(), 0);
     for(std::size_t f = 0; f < fresh.size(); ++f)
       kept_before[f] = before[f] - shift.gone_before(before[f]);
     const std::size_t nc = n_before - shift.gone.size() + fresh.size();
@@ -380,7 +404,8 @@ private:
     shift.relocate(mesh_.in_mesh, 1, kept_before, nc);
     shift.relocate(mesh_.subdomain, 1, kept_before, nc);
     shift.relocate(mesh_.neighbor, 4, kept_before, nc);
-    std::vector<int> fresh_at(fresh.size());
+    std::vector<int>& fresh_at = moves_.fresh;
+    fresh_at.assign(fresh.size(), 0);
     for(std::size_t f = 0; f < fresh.size(); ++f)
     {
       fresh_at[f] = static_cast<int>(kept_before[f] + f);
@@ -485,6 +510,7 @@ private:
   bool slots_known_ = false;
   bool follows_changes_ = false;
   std::size_t cells_read_ = 0;
+  Cell_moves moves_;
   Handle_index_map<Vertex_handle> index_;
 };
 

@@ -104,30 +104,57 @@ public:
   /// surface triangles around each vertex, after the mesh's cells changed.
   void refresh()
   {
+    const int nv = static_cast<int>(mesh_.number_of_vertices());
+    stale_.assign(nv, 0);
     if(distance_) surface_facets_by_vertex(mesh_, surface_begin_, surface_facets_);
     if(budget_)
     {
-      const int nv = static_cast<int>(mesh_.number_of_vertices());
       keeps_volume_.assign(nv, 1);
-      workers_.for_each(0, nv, [this](char&, int v) {
-        int first = -1;   // the first mesh cell around v
-        bool one = mesh_.boundary_begin[v] == mesh_.boundary_begin[v + 1];
-        for(int k = mesh_.incidence_begin[v]; one && k < mesh_.incidence_begin[v + 1]; ++k)
-        {
-          const int c = mesh_.incidences[k].cell;
-          if(!mesh_.in_mesh[c]) continue;
-          if(first < 0) first = c;
-          one = mesh_.subdomain[c] == mesh_.subdomain[first];
-        }
-        keeps_volume_[v] = one;
-      }, 1024);
+      workers_.for_each(0, nv, [this](char&, int v) { keeps_volume_[v] = keeps_volume_now(v); }, 1024);
     }
     if(!quality_guard_) return;
     quality_.resize(mesh_.cells.size());
-    workers_.for_each(0, static_cast<int>(mesh_.cells.size()), [this](char&, int c) {
-      const auto& q = mesh_.cells[c];
-      quality_[c] = tet_quality(measure_, mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]);
-    }, 1024);
+    workers_.for_each(0, static_cast<int>(mesh_.cells.size()), [this](char&, int c) { quality_[c] = measure(c); },
+                      1024);
+  }
+
+  /// The same as `refresh()` after the cells changed as `moves` says
+  /// (Flat_view::Cell_moves) and the vertices `moved` went elsewhere than by
+  /// `apply`, measuring only what may have changed: the new cells, and the cells
+  /// around a vertex moved since the last refresh (`apply` measures a cell from
+  /// the moved vertex, a refresh in the cell's order, which may round otherwise);
+  /// the other cells keep their quality, moved with them.
+  template <class Moves>
+  void refresh(const Moves& moves, const std::vector<int>& moved)
+  {
+    if(moves.whole)
+    {
+      refresh();
+      return;
+    }
+    const int nv = static_cast<int>(mesh_.number_of_vertices());
+    stale_.resize(nv, 0);   // a new vertex is in new cells only
+    for(int v : moved) stale_[v] = 1;
+    if(distance_) surface_facets_by_vertex(mesh_, surface_begin_, surface_facets_);
+    if(budget_)
+    {
+      // Only a vertex of a new cell has other cells around it than before.
+      keeps_volume_.resize(nv, 1);
+      for(int c : moves.fresh)
+        for(int v : mesh_.cells[c]) keeps_volume_[v] = keeps_volume_now(v);
+    }
+    if(quality_guard_)
+    {
+      moves.shift.relocate(quality_, 1, moves.kept_before, mesh_.cells.size());
+      for(int c : moves.fresh) quality_[c] = measure(c);
+      // Each cell once, whatever the number of its vertices that moved (after a
+      // sweep, most of them).
+      workers_.for_each(0, static_cast<int>(mesh_.cells.size()), [this](char&, int c) {
+        const auto& q = mesh_.cells[c];
+        if(stale_[q[0]] || stale_[q[1]] || stale_[q[2]] || stale_[q[3]]) quality_[c] = measure(c);
+      }, 1024);
+    }
+    std::fill(stale_.begin(), stale_.end(), 0);
   }
 
   /// Moves `v` by `X`, or by the longest of X/2, X/4, X/8 that is accepted;
@@ -275,6 +302,7 @@ public:
   {
     mesh_.points[v] = p;
     if(!quality_guard_) return;
+    stale_[v] = 1;
     std::size_t i = 0;
     for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
     {
@@ -284,6 +312,27 @@ public:
   }
 
 private:
+  double measure(int c) const
+  {
+    const auto& q = mesh_.cells[c];
+    return tet_quality(measure_, mesh_.points[q[0]], mesh_.points[q[1]], mesh_.points[q[2]], mesh_.points[q[3]]);
+  }
+
+  // Whether every move of v keeps the volumes (see the class comment).
+  bool keeps_volume_now(int v) const
+  {
+    int first = -1;   // the first mesh cell around v
+    bool one = mesh_.boundary_begin[v] == mesh_.boundary_begin[v + 1];
+    for(int k = mesh_.incidence_begin[v]; one && k < mesh_.incidence_begin[v + 1]; ++k)
+    {
+      const int c = mesh_.incidences[k].cell;
+      if(!mesh_.in_mesh[c]) continue;
+      if(first < 0) first = c;
+      one = mesh_.subdomain[c] == mesh_.subdomain[first];
+    }
+    return one;
+  }
+
   // The quality part of `accepts`: the star's worst mesh cell is not worse at p,
   // and every mesh cell of the star is within the bounds.
   bool keeps_quality(int v, const Point& p, double old_worst, Trial& trial) const
@@ -319,6 +368,7 @@ private:
   Dihedral_bounds bounds_;
   Quality_measure measure_;
   std::vector<double> quality_;   // per cell
+  std::vector<char> stale_;   // per vertex: moved by `apply` since the last refresh
   Thread_workers<char> workers_;
   const Volume_budget* budget_;     // null: volume not priced
   double allowance_ = 0;

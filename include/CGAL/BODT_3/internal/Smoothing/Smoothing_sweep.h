@@ -53,19 +53,26 @@ public:
   }
 
   /// After the cells of the mesh changed (and `build_incidences` ran), with the
-  /// vertices whose stars changed; vertices added since are appended to the
-  /// classification by the caller before this call.
-  void refresh(const std::vector<int>& changed)
+  /// vertices whose stars changed, where the cells went (Flat_view::Cell_moves)
+  /// and the vertices that moved outside the sweeps (Move_guard::refresh);
+  /// vertices added since are appended to the classification by the caller
+  /// before this call.
+  template <class Moves>
+  void refresh(const std::vector<int>& changed, const Moves& moves, const std::vector<int>& moved)
   {
     dirty_.resize(mesh_.number_of_vertices(), 1);
     moved_now_.resize(mesh_.number_of_vertices(), 0);
     moved_once_.resize(mesh_.number_of_vertices(), 0);
     cost_.resize(mesh_.number_of_vertices(), 0);
     for(int v : changed) dirty_[v] = 1;
-    derive();
+    // The dependents' arrays are made again by the next sweep, not here (they keep
+    // their pages meanwhile): a phase without sweeps (the worst cells') re-reads
+    // after each pass that changes cells and would make them each time for a few
+    // lookups.
+    derived_ = false;
     for(int v : changed)
       mark_dependents(v);
-    guard_.refresh();
+    guard_.refresh(moves, moved);
   }
 
   /// While the mesh's incidences are released (a flip pass that reads the
@@ -74,6 +81,7 @@ public:
   void release_derived()
   {
     order_ = Sweep_order();
+    derived_ = false;
     std::vector<int>().swap(dependent_begin_);
     std::vector<int>().swap(dependents_);
   }
@@ -84,6 +92,7 @@ public:
   /// and the result is the same, bit for bit, on any number of threads.
   void run(Iteration_stats& stats)
   {
+    if(!derived_) derive();
     if(order_.colour_begin.empty()) order_ = sweep_order(mesh_, movable());
     for(std::size_t k = 0; k + 1 < order_.colour_begin.size(); ++k)
     {
@@ -172,8 +181,10 @@ public:
         moved_.push_back(v);
         moved_once_[v] = 1;
         dirty_[v] = 1;
-        mark_dependents(v);
-        for(int k = dependent_begin_[v]; k < dependent_begin_[v + 1]; ++k) block_of_[dependents_[k]] = block;
+        for_each_dependent(v, [this, block](int w) {
+          dirty_[w] = 1;
+          block_of_[w] = block;
+        });
       }
     }
   }
@@ -197,12 +208,11 @@ public:
   {
     const int nv = static_cast<int>(mesh_.number_of_vertices());
     const std::vector<char> movable = this->movable();
-    // The order is made by the next sweep: a phase without sweeps (the worst
-    // cells') re-derives after every change of cells and never uses it.
+    // The order is made by the next sweep too.
     order_ = Sweep_order();
     // The vertices to revisit when u moves: the movable vertices sharing a cell
     // with u, and those with a hull check whose far vertex is u. Flat (one array
-    // for all): re-derived after every pass that changes the connectivity.
+    // for all): derived again by the first sweep after a change of the cells.
     // Counted first, then written, each vertex's on any thread (a stamp array per
     // thread): grown by push_back, the array reached up to twice its size.
     auto for_dependents = [&](std::vector<int>& stamp, int u, const auto& f) {
@@ -232,6 +242,7 @@ public:
       int next = dependent_begin_[u];
       for_dependents(stamp, u, [&](int w) { dependents_[next++] = w; });
     }, 1024);
+    derived_ = true;
   }
 
 private:
@@ -401,7 +412,26 @@ private:
 
   void mark_dependents(int v)
   {
-    for(int k = dependent_begin_[v]; k < dependent_begin_[v + 1]; ++k) dirty_[dependents_[k]] = 1;
+    for_each_dependent(v, [this](int w) { dirty_[w] = 1; });
+  }
+
+  // The vertices whose move depends on v's position (see `derive`), from the
+  // derived arrays when they are there, else from the incidences (a vertex may
+  // then come more than once).
+  template <class F>
+  void for_each_dependent(int v, const F& f) const
+  {
+    if(derived_)
+    {
+      for(int k = dependent_begin_[v]; k < dependent_begin_[v + 1]; ++k) f(dependents_[k]);
+      return;
+    }
+    auto add = [&](int w) {
+      if(w != v && classification_.kind[w] != Vertex_kind::fixed) f(w);
+    };
+    for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
+      for(int w : mesh_.incidences[k].face) add(w);
+    for(int k = mesh_.checked_begin[v]; k < mesh_.checked_begin[v + 1]; ++k) add(mesh_.checked_by[k]);
   }
 
   Flat_mesh<K>& mesh_;
@@ -422,6 +452,7 @@ private:
   Sweep_order order_;
   std::vector<int> dependent_begin_;   // per vertex, into dependents_
   std::vector<int> dependents_;
+  bool derived_ = false;   // whether they are those of the cells now
   std::vector<char> dirty_;
   std::vector<char> moved_now_;   // moved in the colour being swept
   std::vector<char> moved_once_;
