@@ -107,6 +107,7 @@ inline void to_json(nlohmann::json& j, const Iteration_stats& s)
                        {"worsening_quality", s.refused_worsening_quality},
                        {"leaving_surface", s.refused_leaving_surface}}},
                      {"max_min_moves", s.max_min_moves},
+                     {"max_min_searches", s.max_min_searches},
                      {"max_relative_move", s.max_relative_move},
                      {"topology", s.topology},
                      {"contraction", s.contraction},

@@ -106,6 +106,7 @@ struct Iteration_stats
   std::size_t refused_worsening_quality = 0;
   std::size_t refused_leaving_surface = 0;        // beyond `max_boundary_distance` of the input's surface
   std::size_t max_min_moves = 0;      // vertices moved by the max-min fallback
+  std::size_t max_min_searches = 0;   // vertices it searched (not those whose search found no step and nothing changed since)
   double max_relative_move = 0;       // largest move / local size
   Topology_stats topology;            // the flip pass after the sweep
   Contraction_stats contraction;      // the edge-contraction pass after the max-min steps

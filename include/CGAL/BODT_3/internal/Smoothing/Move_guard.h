@@ -232,6 +232,10 @@ public:
     return judge(v, state.position, p, &state.worst, state.allowance, trial);
   }
 
+  /// Whether `apply` moved vertex `v` since the last refresh (which measures its
+  /// cells again).
+  bool moved_since_refresh(int v) const { return v < static_cast<int>(stale_.size()) && stale_[v]; }
+
   /// The allowance moves are judged against now.
   double allowance() const { return allowance_; }
 

@@ -45,7 +45,8 @@ public:
                   const Boundary_distance_guard<K>* distance = nullptr)
     : mesh_(mesh), classification_(classification), opt_(opt),
       guard_(mesh, opt.quality_guard, bounds, opt.quality_measure, opt.threads, budget, distance), budget_(budget),
-      workers_(opt.threads), max_min_workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1), moved_now_(mesh.number_of_vertices(), 0),
+      workers_(opt.threads), max_min_workers_(opt.threads), dirty_(mesh.number_of_vertices(), 1),
+      max_min_failed_(mesh.number_of_vertices(), 0), moved_now_(mesh.number_of_vertices(), 0),
       moved_once_(mesh.number_of_vertices(), 0), cost_(mesh.number_of_vertices(), 0)
   {
     if(opt.smoothing_method == Smoothing_method::NODT) projection_ = std::make_unique<Boundary_projection<K>>(mesh);
@@ -61,10 +62,12 @@ public:
   void refresh(const std::vector<int>& changed, const Moves& moves, const std::vector<int>& moved)
   {
     dirty_.resize(mesh_.number_of_vertices(), 1);
+    max_min_failed_.resize(mesh_.number_of_vertices(), 0);
     moved_now_.resize(mesh_.number_of_vertices(), 0);
     moved_once_.resize(mesh_.number_of_vertices(), 0);
     cost_.resize(mesh_.number_of_vertices(), 0);
     for(int v : changed) dirty_[v] = 1;
+    for(int v : changed) max_min_failed_[v] = 0;
     // The dependents' arrays are made again by the next sweep, not here (they keep
     // their pages meanwhile): a phase without sweeps (the worst cells') re-reads
     // after each pass that changes cells and would make them each time for a few
@@ -72,6 +75,7 @@ public:
     derived_ = false;
     for(int v : changed)
       mark_dependents(v);
+    wake_max_min(moves, moved);
     guard_.refresh(moves, moved);
   }
 
@@ -116,6 +120,7 @@ public:
         moved_once_[v] = 1;
         moved_.push_back(v);
         dirty_[v] = 1;
+        max_min_failed_[v] = 0;
         mark_dependents(v);
       }
     }
@@ -157,23 +162,35 @@ public:
     // applied if nothing it read changed since (no vertex it depends on moved, and
     // the budget still allows every step it took), else made again on the mesh as
     // it is. Either way a vertex gets the search the one-by-one order gives it.
+    // A vertex whose last search found no step is not searched again until a
+    // vertex its search depends on moves or its star changes: the bounds hold for
+    // the phase and the budget only shrinks, so it would find none again.
     std::vector<Max_min_search> searches(max_min_block);
+    std::vector<char> ahead(max_min_block);
     if(block_of_.size() < mesh_.number_of_vertices()) block_of_.resize(mesh_.number_of_vertices(), no_block);
     for(std::size_t first = 0; first < vertices.size(); first += max_min_block)
     {
       const std::size_t block = blocks_judged_++;
       const int n = static_cast<int>(std::min(max_min_block, vertices.size() - first));
       const double spent = budget_ ? budget_->spent() : 0;
+      for(int i = 0; i < n; ++i) ahead[static_cast<std::size_t>(i)] = !max_min_failed_[vertices[first + static_cast<std::size_t>(i)]];
       max_min_workers_.for_each(0, n, [&](Max_min_worker& w, int i) {
-        search(vertices[first + static_cast<std::size_t>(i)], spent, w, searches[static_cast<std::size_t>(i)]);
+        if(ahead[static_cast<std::size_t>(i)])
+          search(vertices[first + static_cast<std::size_t>(i)], spent, w, searches[static_cast<std::size_t>(i)]);
       }, 1);
       for(int i = 0; i < n; ++i)
       {
         const int v = vertices[first + static_cast<std::size_t>(i)];
+        if(max_min_failed_[v]) continue;
+        ++stats.max_min_searches;
         Max_min_search& found = searches[static_cast<std::size_t>(i)];
-        if(block_of_[v] == block || !still_affordable(found))
+        if(!ahead[static_cast<std::size_t>(i)] || block_of_[v] == block || !still_affordable(found))
           search(v, budget_ ? budget_->spent() : 0, max_min_again_, found);
-        if(found.costs.empty()) continue;
+        if(found.costs.empty())
+        {
+          max_min_failed_[v] = 1;
+          continue;
+        }
         guard_.apply(v, found.position, found.qualities);
         if(budget_)
           for(double cost : found.costs) budget_->spend(cost);
@@ -183,6 +200,7 @@ public:
         dirty_[v] = 1;
         for_each_dependent(v, [this, block](int w) {
           dirty_[w] = 1;
+          max_min_failed_[w] = 0;
           block_of_[w] = block;
         });
       }
@@ -410,9 +428,37 @@ private:
     return m;
   }
 
+  // Before the guard's refresh: a max-min search may find a step again around a
+  // vertex moved on the triangulation (an insertion's smoothing), and in a cell
+  // the guard measures again (its quality may round otherwise than when `apply`
+  // measured it, and the search compares qualities to the last bit).
+  template <class Moves>
+  void wake_max_min(const Moves& moves, const std::vector<int>& moved)
+  {
+    if(moves.whole)
+    {
+      std::fill(max_min_failed_.begin(), max_min_failed_.end(), 0);
+      return;
+    }
+    for(int v : moved)
+    {
+      max_min_failed_[v] = 0;
+      for_each_dependent(v, [this](int w) { max_min_failed_[w] = 0; });
+    }
+    for(int c : moves.fresh)
+      for(int v : mesh_.cells[c]) max_min_failed_[v] = 0;
+    for(const auto& q : mesh_.cells)
+      if(guard_.moved_since_refresh(q[0]) || guard_.moved_since_refresh(q[1]) || guard_.moved_since_refresh(q[2]) ||
+         guard_.moved_since_refresh(q[3]))
+        for(int v : q) max_min_failed_[v] = 0;
+  }
+
   void mark_dependents(int v)
   {
-    for_each_dependent(v, [this](int w) { dirty_[w] = 1; });
+    for_each_dependent(v, [this](int w) {
+      dirty_[w] = 1;
+      max_min_failed_[w] = 0;
+    });
   }
 
   // The vertices whose move depends on v's position (see `derive`), from the
@@ -454,6 +500,7 @@ private:
   std::vector<int> dependents_;
   bool derived_ = false;   // whether they are those of the cells now
   std::vector<char> dirty_;
+  std::vector<char> max_min_failed_;   // the last max-min search found no step, and nothing it reads changed since
   std::vector<char> moved_now_;   // moved in the colour being swept
   std::vector<char> moved_once_;
   std::vector<double> cost_;   // of each vertex's move in the colour being swept
