@@ -412,9 +412,11 @@ private:
         if(const int i = view_.index(v); view_.vertices()[i] != Vertex_handle())   // not removed since
           changed.push_back(i);
     const std::size_t now = clock_;
+    for(std::size_t v = changed_at_.size(); v < mesh_.number_of_vertices(); ++v) raised_.push_back(static_cast<int>(v));
     changed_at_.resize(mesh_.number_of_vertices(), now);
     new_star_at_.resize(mesh_.number_of_vertices(), now);
     for(int v : changed) changed_at_[v] = new_star_at_[v] = now;
+    raised_.insert(raised_.end(), changed.begin(), changed.end());
     sweep_->refresh(changed, view_.last_cell_moves(), moved);
     stats.reread_seconds += timer_.time() - start;
     charge(result_.phases.reread);
@@ -579,6 +581,7 @@ private:
   {
     ++clock_;
     for(int v : sweep_->moved()) changed_at_[v] = clock_;
+    raised_.insert(raised_.end(), sweep_->moved().begin(), sweep_->moved().end());
   }
 
   // The flip failures by the phase's measure.
@@ -605,11 +608,34 @@ private:
     stamp_regions(history);
   }
 
-  // The last change within one edge of each vertex, for a pass's history.
+  // The last change within one edge of each vertex, for a pass's history. Made
+  // whole the first time and after changes at many vertices; else only around
+  // the vertices whose stamps rose since: a stamp only rises, and a vertex whose
+  // neighbours changed got a new star, stamped now, above every other stamp
+  // (the same arrays either way).
   void stamp_regions(Attempt_history& history)
   {
-    history.region_stamp.resize(mesh_.number_of_vertices());
-    history.topology_stamp.resize(mesh_.number_of_vertices());
+    const std::size_t n = mesh_.number_of_vertices();
+    history.region_stamp.resize(n);
+    history.topology_stamp.resize(n);
+    if(stamps_made_ && raised_.size() < n / 8)
+    {
+      for(int u : raised_)
+      {
+        const std::size_t stamp = changed_at_[u], star = new_star_at_[u];
+        auto raise = [&](int w) {
+          history.region_stamp[w] = std::max(history.region_stamp[w], stamp);
+          history.topology_stamp[w] = std::max(history.topology_stamp[w], star);
+        };
+        raise(u);
+        for(int k = mesh_.incidence_begin[u]; k < mesh_.incidence_begin[u + 1]; ++k)
+          for(int w : mesh_.incidences[k].face) raise(w);
+      }
+      raised_.clear();
+      return;
+    }
+    stamps_made_ = true;
+    raised_.clear();
     workers_.for_each(0, static_cast<int>(mesh_.number_of_vertices()), [&](char&, int v) {
       std::size_t stamp = changed_at_[v], star = new_star_at_[v];
       for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
@@ -682,6 +708,8 @@ private:
   Attempt_history insertion_history_;
   Attempt_history contraction_history_;
   Attempt_history* stamped_ = nullptr;   // the history holding the stamp arrays
+  bool stamps_made_ = false;             // whether they were made whole once
+  std::vector<int> raised_;              // vertices whose changed_at_ or new_star_at_ rose since they were made
   std::vector<Cell_handle> insertion_candidates_;    // the insertion pass's
   std::vector<Vertex_handle> touched_;               // vertices whose star the last pass changed
   std::vector<Added_vertex<Vertex_handle>> added_;   // vertices the last insertion pass added
