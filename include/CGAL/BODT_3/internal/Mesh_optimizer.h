@@ -412,11 +412,13 @@ private:
         if(const int i = view_.index(v); view_.vertices()[i] != Vertex_handle())   // not removed since
           changed.push_back(i);
     const std::size_t now = clock_;
-    for(std::size_t v = changed_at_.size(); v < mesh_.number_of_vertices(); ++v) raised_.push_back(static_cast<int>(v));
+    std::vector<int> added;
+    for(std::size_t v = changed_at_.size(); v < mesh_.number_of_vertices(); ++v) added.push_back(static_cast<int>(v));
     changed_at_.resize(mesh_.number_of_vertices(), now);
     new_star_at_.resize(mesh_.number_of_vertices(), now);
     for(int v : changed) changed_at_[v] = new_star_at_[v] = now;
-    raised_.insert(raised_.end(), changed.begin(), changed.end());
+    raise_stamps(added);
+    raise_stamps(changed);
     sweep_->refresh(changed, view_.last_cell_moves(), moved);
     stats.reread_seconds += timer_.time() - start;
     charge(result_.phases.reread);
@@ -581,7 +583,22 @@ private:
   {
     ++clock_;
     for(int v : sweep_->moved()) changed_at_[v] = clock_;
-    raised_.insert(raised_.end(), sweep_->moved().begin(), sweep_->moved().end());
+    raise_stamps(sweep_->moved());
+  }
+
+  // Vertices whose stamps rose, for the next `stamp_regions`; past an eighth of
+  // the vertices it makes them whole, and the list is dropped (it would grow with
+  // each sweep of a run with no pass to stamp for).
+  void raise_stamps(const std::vector<int>& vertices)
+  {
+    if(restamp_all_) return;
+    if(raised_.size() + vertices.size() >= mesh_.number_of_vertices() / 8)
+    {
+      restamp_all_ = true;
+      std::vector<int>().swap(raised_);
+      return;
+    }
+    raised_.insert(raised_.end(), vertices.begin(), vertices.end());
   }
 
   // The flip failures by the phase's measure.
@@ -618,7 +635,7 @@ private:
     const std::size_t n = mesh_.number_of_vertices();
     history.region_stamp.resize(n);
     history.topology_stamp.resize(n);
-    if(stamps_made_ && raised_.size() < n / 8)
+    if(!restamp_all_)
     {
       for(int u : raised_)
       {
@@ -634,8 +651,7 @@ private:
       raised_.clear();
       return;
     }
-    stamps_made_ = true;
-    raised_.clear();
+    restamp_all_ = false;
     workers_.for_each(0, static_cast<int>(mesh_.number_of_vertices()), [&](char&, int v) {
       std::size_t stamp = changed_at_[v], star = new_star_at_[v];
       for(int k = mesh_.incidence_begin[v]; k < mesh_.incidence_begin[v + 1]; ++k)
@@ -708,8 +724,8 @@ private:
   Attempt_history insertion_history_;
   Attempt_history contraction_history_;
   Attempt_history* stamped_ = nullptr;   // the history holding the stamp arrays
-  bool stamps_made_ = false;             // whether they were made whole once
-  std::vector<int> raised_;              // vertices whose changed_at_ or new_star_at_ rose since they were made
+  bool restamp_all_ = true;              // the stamps are made whole next time
+  std::vector<int> raised_;              // else: vertices whose changed_at_ or new_star_at_ rose since they were made
   std::vector<Cell_handle> insertion_candidates_;    // the insertion pass's
   std::vector<Vertex_handle> touched_;               // vertices whose star the last pass changed
   std::vector<Added_vertex<Vertex_handle>> added_;   // vertices the last insertion pass added
